@@ -1,0 +1,84 @@
+#include "passageMesh/blade/BladeShape.hpp"
+
+#include <cmath>
+
+namespace passageMesh {
+
+BladeShape::BladeShape(const BladeParameters& parameters)
+    : parameters_(parameters),
+      controlPoints_(bladeControlPoints<double>(parameters.toArray().data())) {}
+
+const std::array<Point2<double>, sideControlCount>& BladeShape::sideControlPoints(
+    BladeSide side) const {
+  return side == BladeSide::lower ? controlPoints_.lower : controlPoints_.upper;
+}
+
+Eigen::Vector2d BladeShape::point(BladeSide side, double u) const {
+  const CubicBasis b = cubicBasis(sideControlCount, u);
+  return combine(b, b.value, sideControlPoints(side).data());
+}
+
+Eigen::Vector2d BladeShape::derivative(BladeSide side, double u) const {
+  const CubicBasis b = cubicBasis(sideControlCount, u);
+  return combine(b, b.d1, sideControlPoints(side).data());
+}
+
+Eigen::Vector2d BladeShape::secondDerivative(BladeSide side, double u) const {
+  const CubicBasis b = cubicBasis(sideControlCount, u);
+  return combine(b, b.d2, sideControlPoints(side).data());
+}
+
+Eigen::Vector2d BladeShape::outwardNormal(BladeSide side, double u) const {
+  const Eigen::Vector2d t = derivative(side, u).normalized();
+  // Along the counter-clockwise loop the lower side runs with u and the upper side
+  // against it; outward is the loop tangent turned -90 degrees.
+  return side == BladeSide::lower ? Eigen::Vector2d(t.y(), -t.x())
+                                  : Eigen::Vector2d(-t.y(), t.x());
+}
+
+double BladeShape::curvature(BladeSide side, double u) const {
+  const Eigen::Vector2d d1 = derivative(side, u), d2 = secondDerivative(side, u);
+  const double k = (d1.x() * d2.y() - d1.y() * d2.x()) / std::pow(d1.norm(), 3);
+  return side == BladeSide::lower ? k : -k;
+}
+
+Eigen::Vector2d BladeShape::camberPoint(double u) const {
+  return bezierCombine(controlPoints_.camber, BezierBasis(u).value);
+}
+
+Eigen::Vector2d BladeShape::camberDerivative(double u) const {
+  return bezierCombine(controlPoints_.camber, BezierBasis(u).d1);
+}
+
+double BladeShape::thickness(BladeSide side, double u) const {
+  const auto& p = parameters_;
+  std::array<double, thicknessControlCount> t;
+  t[0] = p.radiusLe;
+  t[7] = p.radiusTe;
+  const auto& inner = side == BladeSide::upper ? p.thicknessUpper : p.thicknessLower;
+  for (int k = 0; k < 6; ++k) t[k + 1] = inner[k];
+  const CubicBasis b = cubicBasis(thicknessControlCount, u);
+  return combine(b, b.value, t.data()) * p.chord;
+}
+
+std::vector<double> BladeShape::sideParameters(int count) const {
+  std::vector<double> u(count);
+  for (int k = 0; k < count; ++k)
+    u[k] = 0.5 * (1.0 - std::cos(M_PI * k / (count - 1)));
+  return u;
+}
+
+std::vector<Eigen::Vector2d> BladeShape::sampleLoop(int count) const {
+  // count distinct points: (count/2 + 1) on the lower side including both edges, the rest
+  // on the upper side without its end points.
+  const int lowerCount = count / 2 + 1;
+  const int upperCount = count - lowerCount + 2;
+  std::vector<Eigen::Vector2d> loop;
+  loop.reserve(count);
+  for (double u : sideParameters(lowerCount)) loop.push_back(point(BladeSide::lower, u));
+  const auto uUpper = sideParameters(upperCount);
+  for (int k = upperCount - 2; k >= 1; --k) loop.push_back(point(BladeSide::upper, uUpper[k]));
+  return loop;
+}
+
+}  // namespace passageMesh

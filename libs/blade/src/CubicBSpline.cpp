@@ -1,0 +1,84 @@
+#include "passageMesh/blade/CubicBSpline.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace passageMesh {
+
+std::vector<double> clampedUniformKnots(int controlCount) {
+  if (controlCount < 4) throw std::invalid_argument("a cubic B-spline needs 4 control values");
+  const int spans = controlCount - 3;
+  std::vector<double> knots(controlCount + 4);
+  for (int k = 0; k < 4; ++k) {
+    knots[k] = 0.0;
+    knots[controlCount + k] = 1.0;
+  }
+  for (int k = 1; k < spans; ++k) knots[3 + k] = static_cast<double>(k) / spans;
+  return knots;
+}
+
+CubicBasis cubicBasis(int controlCount, double u) {
+  // Uniform interior knots: work in the local coordinate of the span and use the
+  // Cox-de Boor recursion on the knot vector (the clamped end spans are not uniform).
+  const int spans = controlCount - 3;
+  u = std::clamp(u, 0.0, 1.0);
+  const int span = std::min(static_cast<int>(u * spans), spans - 1);  // 0-based span
+  // Knot function: t(k) for the full clamped vector, index k in [0, controlCount+3].
+  auto knot = [&](int k) {
+    if (k <= 3) return 0.0;
+    if (k >= controlCount) return 1.0;
+    return static_cast<double>(k - 3) / spans;
+  };
+  const int i = span + 3;  // knot index with knot(i) <= u < knot(i+1)
+  // Degree-0..3 basis by the triangular scheme (The NURBS Book, A2.3, written anew).
+  double ndu[4][4];
+  double left[4], right[4];
+  ndu[0][0] = 1.0;
+  for (int j = 1; j <= 3; ++j) {
+    left[j] = u - knot(i + 1 - j);
+    right[j] = knot(i + j) - u;
+    double saved = 0.0;
+    for (int r = 0; r < j; ++r) {
+      ndu[j][r] = right[r + 1] + left[j - r];
+      const double temp = ndu[r][j - 1] / ndu[j][r];
+      ndu[r][j] = saved + right[r + 1] * temp;
+      saved = left[j - r] * temp;
+    }
+    ndu[j][j] = saved;
+  }
+  CubicBasis b;
+  b.first = i - 3;
+  double a[2][4];
+  for (int r = 0; r <= 3; ++r) {
+    b.value[r] = ndu[r][3];
+    int s1 = 0, s2 = 1;
+    a[0][0] = 1.0;
+    double ders[3] = {ndu[r][3], 0.0, 0.0};
+    for (int k = 1; k <= 2; ++k) {
+      double d = 0.0;
+      const int rk = r - k, pk = 3 - k;
+      if (r >= k) {
+        a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
+        d = a[s2][0] * ndu[rk][pk];
+      }
+      const int j1 = rk >= -1 ? 1 : -rk;
+      const int j2 = (r - 1 <= pk) ? k - 1 : 3 - r;
+      for (int j = j1; j <= j2; ++j) {
+        a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
+        d += a[s2][j] * ndu[rk + j][pk];
+      }
+      if (r <= pk) {
+        a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
+        d += a[s2][k] * ndu[r][pk];
+      }
+      ders[k] = d;
+      std::swap(s1, s2);
+    }
+    b.d1[r] = ders[1] * 3.0;
+    b.d2[r] = ders[2] * 6.0;
+  }
+  return b;
+}
+
+}  // namespace passageMesh
