@@ -1,0 +1,25 @@
+#pragma once
+// Scattered blade points as a user gives them (any start point, either orientation, open
+// or closed, any scale or position), checked and put in a standard order: a closed loop
+// without repeated closing point, counter-clockwise in (x, y).
+#include <Eigen/Core>
+#include <vector>
+
+#include "passageMesh/core/PointFile.hpp"
+
+namespace passageMesh {
+
+inline constexpr int minimumBladePoints = 20;
+
+struct OrderedBladePoints {
+  std::vector<Eigen::Vector2d> points;  // counter-clockwise loop
+  std::vector<int> inputIndex;          // index of each point in the input
+  bool reversed = false;                // the input ran clockwise
+  bool closed = false;                  // the input repeated its first point at the end
+};
+
+// Throws InputError naming the file (and line) for: fewer than minimumBladePoints
+// distinct points, duplicate points, a self-intersecting loop, a zero-area loop.
+OrderedBladePoints orderBladePoints(const PointSet& input);
+
+}  // namespace passageMesh

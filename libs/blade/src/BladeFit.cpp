@@ -1,0 +1,263 @@
+#include "passageMesh/blade/BladeFit.hpp"
+
+#include <ceres/ceres.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "passageMesh/blade/BladeProjection.hpp"
+#include "passageMesh/blade/BladeShape.hpp"
+
+namespace passageMesh {
+
+namespace {
+
+constexpr int nP = BladeParameters::size;
+using Jet = ceres::Jet<double, nP>;
+using RowJacobian = Eigen::Matrix<double, 2, nP>;
+
+// Signed distances of the points from the profile, one residual per point. The foot
+// points are found afresh at each evaluation, so the Jacobian of a distance is
+// -n . dC/dp at the foot point (the foot point's own motion is tangential).
+//
+// Two more residuals tie the profile's end points (leading and trailing edge) to the
+// polygon of the points. Without them a blade with sharp edges can grow zero-thickness
+// tails beyond the data that no point-to-curve distance sees; they are weighted like all
+// the points together.
+class ProfileDistanceCost final : public ceres::CostFunction {
+ public:
+  // With `power` p > 2 each distance r enters as |r|^(p/2) / scale^(p/2-1), so the sum of
+  // squares becomes the sum of |r|^p, which weighs the largest deviations more.
+  ProfileDistanceCost(const std::vector<Eigen::Vector2d>& points, double power, double scale)
+      : points_(points), edgeWeight_(std::sqrt(static_cast<double>(points.size()))),
+        power_(power), scale_(scale) {
+    set_num_residuals(static_cast<int>(points.size()) + 2);
+    mutable_parameter_block_sizes()->push_back(nP);
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const double* p = parameters[0];
+    for (int k = 0; k < nP; ++k)
+      if (!std::isfinite(p[k])) return false;
+    const BladeShape shape(BladeParameters::fromArray(p));
+    const BladeProjector projector(shape, 128);
+
+    std::array<RowJacobian, sideControlCount> dLower, dUpper;
+    if (jacobians && jacobians[0]) controlPointJacobians(p, dLower, dUpper);
+
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      const FootPoint foot = projector.project(points_[i]);
+      const double r = foot.signedDistance;
+      if (!std::isfinite(r)) return false;
+      const double magnitude = std::abs(r) / scale_;
+      const double half = 0.5 * power_;
+      residuals[i] = (r < 0 ? -scale_ : scale_) * std::pow(magnitude, half);
+      const double chain = half * std::pow(magnitude, half - 1.0);  // d residual / d r
+      if (!jacobians || !jacobians[0]) continue;
+      // Unit direction of the residual: (q - C)/|q - C| with the residual's sign, or the
+      // outward normal when the point lies on the curve.
+      const Eigen::Vector2d gap = points_[i] - foot.point;
+      const double distance = gap.norm();
+      const Eigen::Vector2d direction =
+          distance > 1e-14 ? Eigen::Vector2d(gap / distance * (foot.signedDistance < 0 ? -1.0 : 1.0))
+                           : shape.outwardNormal(foot.side, foot.u);
+      const CubicBasis b = cubicBasis(sideControlCount, foot.u);
+      const auto& d = foot.side == BladeSide::lower ? dLower : dUpper;
+      RowJacobian dC = d[b.first] * b.value[0];
+      for (int k = 1; k < 4; ++k) dC += d[b.first + k] * b.value[k];
+      Eigen::Map<Eigen::Matrix<double, 1, nP>> row(jacobians[0] + i * nP);
+      row = -chain * direction.transpose() * dC;
+    }
+    const std::size_t n = points_.size();
+    const int edgeControlPoint[2] = {0, sideControlCount - 1};
+    for (int e = 0; e < 2; ++e) {
+      const Eigen::Vector2d edge = shape.sideControlPoints(BladeSide::lower)[edgeControlPoint[e]];
+      const Eigen::Vector2d gap = edge - nearestOnPolygon(edge);
+      const double distance = gap.norm();
+      residuals[n + e] = edgeWeight_ * distance;
+      if (!jacobians || !jacobians[0]) continue;
+      Eigen::Map<Eigen::Matrix<double, 1, nP>> row(jacobians[0] + (n + e) * nP);
+      if (distance > 1e-14)
+        row = edgeWeight_ * (gap / distance).transpose() * dLower[edgeControlPoint[e]];
+      else
+        row.setZero();
+    }
+    return true;
+  }
+
+ private:
+  static void controlPointJacobians(const double* p,
+                                    std::array<RowJacobian, sideControlCount>& lower,
+                                    std::array<RowJacobian, sideControlCount>& upper) {
+    std::array<Jet, nP> jets;
+    for (int k = 0; k < nP; ++k) jets[k] = Jet(p[k], k);
+    const BladeControlPoints<Jet> cp = bladeControlPoints<Jet>(jets.data());
+    for (int c = 0; c < sideControlCount; ++c)
+      for (int xy = 0; xy < 2; ++xy) {
+        lower[c].row(xy) = cp.lower[c][xy].v.transpose();
+        upper[c].row(xy) = cp.upper[c][xy].v.transpose();
+      }
+  }
+
+  Eigen::Vector2d nearestOnPolygon(const Eigen::Vector2d& q) const {
+    Eigen::Vector2d best = points_[0];
+    double bestDistance = std::numeric_limits<double>::max();
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+      const Eigen::Vector2d& a = points_[k];
+      const Eigen::Vector2d& b = points_[(k + 1) % points_.size()];
+      const double t = std::clamp((q - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+      const Eigen::Vector2d c = a + t * (b - a);
+      if ((q - c).squaredNorm() < bestDistance) {
+        bestDistance = (q - c).squaredNorm();
+        best = c;
+      }
+    }
+    return best;
+  }
+
+  const std::vector<Eigen::Vector2d>& points_;
+  double edgeWeight_;
+  double power_;
+  double scale_;
+};
+
+struct Start {
+  std::array<double, nP> values;
+  double cost;
+  int iterations;
+};
+
+Start solveFrom(const std::vector<Eigen::Vector2d>& points, const BladeParameters& guess,
+                int maxIterations, double power = 2, double scale = 1) {
+  Start s{guess.toArray(), 0, 0};
+  ceres::Problem problem;
+  problem.AddResidualBlock(new ProfileDistanceCost(points, power, scale), nullptr,
+                           s.values.data());
+  // Bounds keep the parametrization defined: positive chord, handles and radii, and
+  // non-negative thickness (negative thickness is an invalid blade).
+  problem.SetParameterLowerBound(s.values.data(), 2, 0.2 * guess.chord);
+  for (int k : {6, 7}) {
+    problem.SetParameterLowerBound(s.values.data(), k, 0.02);
+    problem.SetParameterUpperBound(s.values.data(), k, 2.0);
+  }
+  for (int k : {8, 9}) {
+    problem.SetParameterLowerBound(s.values.data(), k, 1e-5);
+    problem.SetParameterUpperBound(s.values.data(), k, 1.0);
+  }
+  for (int k = 10; k < nP; ++k) problem.SetParameterLowerBound(s.values.data(), k, 0.0);
+  // Camber end directions pointing downstream keep the camber line single-valued in x.
+  for (int k : {4, 5}) {
+    problem.SetParameterLowerBound(s.values.data(), k, -89.0);
+    problem.SetParameterUpperBound(s.values.data(), k, 89.0);
+  }
+  ceres::Solver::Options options;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.max_num_iterations = maxIterations;
+  options.function_tolerance = 1e-15;
+  options.gradient_tolerance = 1e-16;
+  options.parameter_tolerance = 1e-14;
+  options.num_threads = 1;
+  options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  s.cost = summary.final_cost;
+  s.iterations = static_cast<int>(summary.iterations.size());
+  return s;
+}
+
+// One start: solved in a frame with the start's leading edge at the origin and unit chord,
+// so that every parameter is of order one; lengths are mapped back afterwards.
+struct Candidate {
+  BladeParameters parameters;
+  double cost = 0;  // [m^2]
+  bool valid = false;
+};
+
+Candidate solveStart(const std::vector<Eigen::Vector2d>& points, const BladeParameters& g,
+                     int maxIterations, int& iterations, double power = 2,
+                     double scaleInChords = 1) {
+  const Eigen::Vector2d origin(g.xLe, g.yLe);
+  const double scale = g.chord;
+  std::vector<Eigen::Vector2d> local(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) local[k] = (points[k] - origin) / scale;
+  BladeParameters trial = g;
+  trial.xLe = trial.yLe = 0;
+  trial.chord = 1;
+  const Start solved = solveFrom(local, trial, maxIterations, power, scaleInChords);
+  iterations += solved.iterations;
+  Candidate c;
+  c.parameters = BladeParameters::fromArray(solved.values);
+  c.parameters.xLe = origin.x() + scale * c.parameters.xLe;
+  c.parameters.yLe = origin.y() + scale * c.parameters.yLe;
+  c.parameters.chord *= scale;
+  c.cost = solved.cost * scale * scale;
+  return c;
+}
+
+bool better(const Candidate& a, const Candidate& b) {
+  return a.valid != b.valid ? a.valid : a.cost < b.cost;
+}
+
+}  // namespace
+
+BladeFitResult fitBlade(const std::vector<Eigen::Vector2d>& points,
+                        const BladeFitOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  BladeFitResult result;
+  result.initialGuess = guessBladeParameters(points);
+
+  // Where the leading-edge point sits on a round edge, and so the camber angles, is the
+  // least determined part of the shape: a coarse stage fits a grid of edge angles on a
+  // subsample of the points for a few iterations, the best few are then converged on all
+  // points, and the best valid result wins.
+  std::vector<Eigen::Vector2d> subsample;
+  const std::size_t stride = std::max<std::size_t>(1, points.size() / options.coarsePoints);
+  for (std::size_t k = 0; k < points.size(); k += stride) subsample.push_back(points[k]);
+
+  std::vector<std::pair<double, BladeParameters>> coarse;
+  const double stagger = result.initialGuess.stagger;
+  auto tryCoarse = [&](const BladeParameters& g) {
+    Candidate c = solveStart(subsample, g, options.coarseIterations, result.iterations);
+    coarse.emplace_back(c.cost, g);
+    ++result.starts;
+  };
+  tryCoarse(result.initialGuess);
+  for (double le : options.leadingEdgeAngles)
+    for (double te : options.trailingEdgeAngles)
+      tryCoarse(guessBladeParameters(points, stagger + le, stagger + te));
+  std::sort(coarse.begin(), coarse.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+
+  Candidate best;
+  best.cost = std::numeric_limits<double>::infinity();
+  const int refined = std::min<int>(options.refinedStarts, static_cast<int>(coarse.size()));
+  for (int s = 0; s < refined; ++s) {
+    Candidate c = solveStart(points, coarse[s].second, options.maxIterations, result.iterations);
+    c.valid = checkBladeValidity(BladeShape(c.parameters)).valid;
+    if (s == 0 || better(c, best)) best = c;
+  }
+  // Refine the winner with a higher power of the distances: it trades a little of the
+  // mean deviation for a lower maximum.
+  if (options.finalPower > 2) {
+    const double rms = std::sqrt(2 * best.cost / static_cast<double>(points.size()));
+    Candidate c = solveStart(points, best.parameters, options.maxIterations, result.iterations,
+                             options.finalPower, rms / best.parameters.chord);
+    c.valid = checkBladeValidity(BladeShape(c.parameters)).valid;
+    if (c.valid || !best.valid) best = c;
+  }
+  result.parameters = best.parameters;
+
+  const BladeShape shape(result.parameters);
+  const Deviation d = deviationFromProfile(shape, points);
+  result.meanDeviation = d.mean;
+  result.maxDeviation = d.max;
+  result.maxDeviationPoint = d.maxIndex;
+  result.validity = checkBladeValidity(shape);
+  result.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace passageMesh
