@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <numeric>
 #include <cmath>
 
 #include "passageMesh/blade/BladeProjection.hpp"
 #include "passageMesh/blade/BladeShape.hpp"
+#include "passageMesh/core/ParallelFor.hpp"
 
 namespace passageMesh {
 
@@ -27,12 +29,13 @@ using RowJacobian = Eigen::Matrix<double, 2, nP>;
 // the points together.
 class ProfileDistanceCost final : public ceres::CostFunction {
  public:
+  static constexpr double symmetryWeight = 0.001;
   // With `power` p > 2 each distance r enters as |r|^(p/2) / scale^(p/2-1), so the sum of
   // squares becomes the sum of |r|^p, which weighs the largest deviations more.
   ProfileDistanceCost(const std::vector<Eigen::Vector2d>& points, double power, double scale)
       : points_(points), edgeWeight_(std::sqrt(static_cast<double>(points.size()))),
         power_(power), scale_(scale) {
-    set_num_residuals(static_cast<int>(points.size()) + 2);
+    set_num_residuals(static_cast<int>(points.size()) + 4);
     mutable_parameter_block_sizes()->push_back(nP);
   }
 
@@ -42,10 +45,16 @@ class ProfileDistanceCost final : public ceres::CostFunction {
     for (int k = 0; k < nP; ++k)
       if (!std::isfinite(p[k])) return false;
     const BladeShape shape(BladeParameters::fromArray(p));
-    const BladeProjector projector(shape, 128);
+    const BladeProjector projector(shape, 64);
 
     std::array<RowJacobian, sideControlCount> dLower, dUpper;
-    if (jacobians && jacobians[0]) controlPointJacobians(p, dLower, dUpper);
+    if (jacobians && jacobians[0]) {
+      controlPointJacobians(p, dLower, dUpper);
+      // An edge control point sits at sqrt(h * radius / 3) from the edge: its derivative
+      // is unbounded where h * radius -> 0. Such a point is rejected as a step, not used.
+      for (int c = 0; c < sideControlCount; ++c)
+        if (!dLower[c].allFinite() || !dUpper[c].allFinite()) return false;
+    }
 
     for (std::size_t i = 0; i < points_.size(); ++i) {
       const FootPoint foot = projector.project(points_[i]);
@@ -83,6 +92,18 @@ class ProfileDistanceCost final : public ceres::CostFunction {
         row = edgeWeight_ * (gap / distance).transpose() * dLower[edgeControlPoint[e]];
       else
         row.setZero();
+    }
+    // On a round edge the edge point could slide along the circle with the thickness
+    // taking up the difference; a weak pull towards equal upper and lower thickness next
+    // to each edge puts it where the camber line bisects the edge, as a designer would.
+    const int pairs[2][2] = {{10, 16}, {15, 21}};
+    for (int e = 0; e < 2; ++e) {
+      residuals[n + 2 + e] = symmetryWeight * (p[pairs[e][0]] - p[pairs[e][1]]);
+      if (!jacobians || !jacobians[0]) continue;
+      Eigen::Map<Eigen::Matrix<double, 1, nP>> row(jacobians[0] + (n + 2 + e) * nP);
+      row.setZero();
+      row[pairs[e][0]] = symmetryWeight;
+      row[pairs[e][1]] = -symmetryWeight;
     }
     return true;
   }
@@ -149,8 +170,8 @@ Start solveFrom(const std::vector<Eigen::Vector2d>& points, const BladeParameter
   for (int k = 10; k < nP; ++k) problem.SetParameterLowerBound(s.values.data(), k, 0.0);
   // Camber end directions pointing downstream keep the camber line single-valued in x.
   for (int k : {4, 5}) {
-    problem.SetParameterLowerBound(s.values.data(), k, -89.0);
-    problem.SetParameterUpperBound(s.values.data(), k, 89.0);
+    problem.SetParameterLowerBound(s.values.data(), k, -88.0);
+    problem.SetParameterUpperBound(s.values.data(), k, 88.0);
   }
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_QR;
@@ -200,6 +221,51 @@ bool better(const Candidate& a, const Candidate& b) {
   return a.valid != b.valid ? a.valid : a.cost < b.cost;
 }
 
+// One round of the multi-start search: every guess fitted coarsely (few iterations on a
+// subsample), the best `refinedStarts` of them converged on all points, the best valid
+// result kept and then polished with the higher power of the distances, which trades a
+// little of the mean deviation for a lower maximum.
+Candidate searchRound(const std::vector<Eigen::Vector2d>& points,
+                      const std::vector<Eigen::Vector2d>& subsample,
+                      const std::vector<Eigen::Vector2d>& refineSample,
+                      const std::vector<BladeParameters>& guesses,
+                      const BladeFitOptions& options, int& iterations) {
+  const int coarseCount = static_cast<int>(guesses.size());
+  std::vector<double> coarseCost(coarseCount);
+  std::vector<int> coarseIterations(coarseCount, 0);
+  parallelFor(coarseCount, options.threads, [&](int s) {
+    coarseCost[s] = solveStart(subsample, guesses[s], options.coarseIterations,
+                               coarseIterations[s]).cost;
+  });
+  std::vector<int> order(coarseCount);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return coarseCost[a] < coarseCost[b]; });
+
+  const int refined = std::min(options.refinedStarts, coarseCount);
+  std::vector<Candidate> candidates(refined);
+  std::vector<int> refinedIterations(refined, 0);
+  parallelFor(refined, options.threads, [&](int s) {
+    candidates[s] = solveStart(refineSample, guesses[order[s]], options.maxIterations,
+                               refinedIterations[s]);
+    candidates[s].valid = checkBladeValidity(BladeShape(candidates[s].parameters)).valid;
+  });
+  Candidate best = candidates[0];
+  for (const Candidate& c : candidates)
+    if (better(c, best)) best = c;
+  iterations += std::accumulate(coarseIterations.begin(), coarseIterations.end(), 0) +
+                std::accumulate(refinedIterations.begin(), refinedIterations.end(), 0);
+
+  if (options.finalPower > 2) {
+    const double rms = std::sqrt(2 * best.cost / static_cast<double>(refineSample.size()));
+    Candidate c = solveStart(points, best.parameters, options.maxIterations, iterations,
+                             options.finalPower, rms / best.parameters.chord);
+    c.valid = checkBladeValidity(BladeShape(c.parameters)).valid;
+    if (c.valid || !best.valid) best = c;
+  }
+  return best;
+}
+
 }  // namespace
 
 BladeFitResult fitBlade(const std::vector<Eigen::Vector2d>& points,
@@ -208,44 +274,49 @@ BladeFitResult fitBlade(const std::vector<Eigen::Vector2d>& points,
   BladeFitResult result;
   result.initialGuess = guessBladeParameters(points);
 
-  // Where the leading-edge point sits on a round edge, and so the camber angles, is the
-  // least determined part of the shape: a coarse stage fits a grid of edge angles on a
-  // subsample of the points for a few iterations, the best few are then converged on all
-  // points, and the best valid result wins.
-  std::vector<Eigen::Vector2d> subsample;
-  const std::size_t stride = std::max<std::size_t>(1, points.size() / options.coarsePoints);
-  for (std::size_t k = 0; k < points.size(); k += stride) subsample.push_back(points[k]);
-
-  std::vector<std::pair<double, BladeParameters>> coarse;
-  const double stagger = result.initialGuess.stagger;
-  auto tryCoarse = [&](const BladeParameters& g) {
-    Candidate c = solveStart(subsample, g, options.coarseIterations, result.iterations);
-    coarse.emplace_back(c.cost, g);
-    ++result.starts;
+  // Where the edge points sit on round edges, and so the camber angles, is the least
+  // determined part of the shape: the search tries a grid of edge angles around the guess.
+  // While the best fit misses the target deviation, further rounds try the grid shifted
+  // by half its spacing.
+  auto everyNth = [&](int count) {
+    std::vector<Eigen::Vector2d> sample;
+    const std::size_t stride = std::max<std::size_t>(1, points.size() / std::max(count, 1));
+    for (std::size_t k = 0; k < points.size(); k += stride) sample.push_back(points[k]);
+    return sample;
   };
-  tryCoarse(result.initialGuess);
-  for (double le : options.leadingEdgeAngles)
-    for (double te : options.trailingEdgeAngles)
-      tryCoarse(guessBladeParameters(points, stagger + le, stagger + te));
-  std::sort(coarse.begin(), coarse.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
+  const auto subsample = everyNth(options.coarsePoints);
+  const auto refineSample = everyNth(options.refinePoints);
+  const double stagger = result.initialGuess.stagger;
+  const double shifts[][2] = {{0, 0}, {0.5, 0.5}, {0.5, 0}, {0, 0.5}};
+  const int rounds = std::clamp(options.maxRounds, 1, 4);
 
   Candidate best;
-  best.cost = std::numeric_limits<double>::infinity();
-  const int refined = std::min<int>(options.refinedStarts, static_cast<int>(coarse.size()));
-  for (int s = 0; s < refined; ++s) {
-    Candidate c = solveStart(points, coarse[s].second, options.maxIterations, result.iterations);
-    c.valid = checkBladeValidity(BladeShape(c.parameters)).valid;
-    if (s == 0 || better(c, best)) best = c;
-  }
-  // Refine the winner with a higher power of the distances: it trades a little of the
-  // mean deviation for a lower maximum.
-  if (options.finalPower > 2) {
-    const double rms = std::sqrt(2 * best.cost / static_cast<double>(points.size()));
-    Candidate c = solveStart(points, best.parameters, options.maxIterations, result.iterations,
-                             options.finalPower, rms / best.parameters.chord);
-    c.valid = checkBladeValidity(BladeShape(c.parameters)).valid;
-    if (c.valid || !best.valid) best = c;
+  double bestMax = std::numeric_limits<double>::infinity();
+  for (int round = 0; round < rounds; ++round) {
+    std::vector<BladeParameters> guesses;
+    if (round == 0) {
+      guesses.push_back(result.initialGuess);
+      for (const auto& extra : options.extraStarts) guesses.push_back(extra);
+    }
+    for (double le : options.leadingEdgeAngles)
+      for (double te : options.trailingEdgeAngles)
+        guesses.push_back(guessBladeParameters(
+            points, stagger + le + shifts[round][0] * options.gridSpacing,
+            stagger + te + shifts[round][1] * options.gridSpacing));
+    result.starts += static_cast<int>(guesses.size());
+    ++result.rounds;
+    const Candidate c =
+        searchRound(points, subsample, refineSample, guesses, options, result.iterations);
+    const double max = deviationFromProfile(BladeShape(c.parameters), points).max;
+    const double previousMax = bestMax;
+    if (round == 0 || (c.valid && !best.valid) || (c.valid == best.valid && max < bestMax)) {
+      best = c;
+      bestMax = max;
+    }
+    if (best.valid && bestMax <= options.targetMaxDeviation * best.parameters.chord) break;
+    // A round that gained little says the shape is as close as the parametrization gets
+    // (real, measured blades), not that a better basin was missed.
+    if (round > 0 && bestMax > 0.9 * previousMax) break;
   }
   result.parameters = best.parameters;
 

@@ -19,9 +19,19 @@ struct BladeFitOptions {
   // fitted coarsely, then the best `refinedStarts` converged on all points.
   std::vector<double> leadingEdgeAngles{-75, -50, -25, 0, 25, 50, 75};
   std::vector<double> trailingEdgeAngles{-50, -25, 0, 25, 50};
+  double gridSpacing = 25;  // [deg]; later rounds shift the grid by half of it
+  // Rounds of the search, stopped once the maximum deviation of the points from the
+  // fitted profile is within targetMaxDeviation (a fraction of the chord), or when a round
+  // improved it by less than 10 %.
+  int maxRounds = 4;
+  double targetMaxDeviation = 1e-4;
   int coarsePoints = 150;    // subsample size of the coarse stage
+  int refinePoints = 400;    // subsample size of the refined starts (the polish uses all)
   int coarseIterations = 20;
-  int refinedStarts = 3;
+  int refinedStarts = 6;
+  int threads = 0;  // for the starts; 0 = all cores (the result does not depend on it)
+  // More starting points for the coarse stage (for example a previous fit).
+  std::vector<BladeParameters> extraStarts;
   // The winner is refined minimising the sum of |distance|^finalPower (2 = no refinement).
   double finalPower = 4;
 };
@@ -34,6 +44,7 @@ struct BladeFitResult {
   int maxDeviationPoint = -1;  // index in the points given to fitBlade
   int iterations = 0;          // Levenberg-Marquardt iterations, all starts together
   int starts = 0;  // coarse starts tried
+  int rounds = 0;  // search rounds run
   double seconds = 0;
   BladeValidity validity;
 };
