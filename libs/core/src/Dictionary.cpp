@@ -64,11 +64,12 @@ Dictionary Dictionary::read(const std::filesystem::path& file, const std::string
                          rootName + ">");
   Dictionary dict(rootName, name);
   dict.line_ = root->GetLineNum();
-  dict.readChildren(root, allowedKeys, allowedSections);
+  dict.readChildren(root, &allowedKeys, allowedSections);
   return dict;
 }
 
-void Dictionary::readChildren(const void* xmlElement, const std::vector<std::string>& allowedKeys,
+void Dictionary::readChildren(const void* xmlElement,
+                              const std::vector<std::string>* allowedKeys,
                               const std::vector<std::string>& allowedSections) {
   const auto& element = *static_cast<const tinyxml2::XMLElement*>(xmlElement);
   for (const auto* child = element.FirstChildElement(); child;
@@ -86,13 +87,13 @@ void Dictionary::readChildren(const void* xmlElement, const std::vector<std::str
       Dictionary& sub = addSection(key);
       sub.line_ = line;
       // A section's keys are checked by the caller (checkKeys), which knows what it holds.
-      sub.readChildren(child, {}, {});
+      sub.readChildren(child, nullptr, {});
       continue;
     }
-    if (!allowedKeys.empty() && !contains(allowedKeys, key))
+    if (allowedKeys && !contains(*allowedKeys, key))
       throw InputError(source_, line,
-                       "unknown key <" + key + "> in <" + rootName_ +
-                           "> (allowed: " + joined(allowedKeys) + ")");
+                       "unknown key <" + key + "> in <" + rootName_ + ">" +
+                           (allowedKeys->empty() ? "" : " (allowed: " + joined(*allowedKeys) + ")"));
     if (has(key)) throw InputError(source_, line, "key <" + key + "> given twice");
     entries_.push_back({key, trim(child->GetText() ? child->GetText() : ""), line});
   }

@@ -21,8 +21,8 @@ class Dictionary {
  public:
   explicit Dictionary(std::string rootName, std::string source = "");
 
-  // Reads `file` and checks its root name and its keys: `allowedKeys` for plain entries,
-  // `allowedSections` for nested sections (whose own keys are checked by the caller with
+  // Reads `file` and checks its root name and its keys: `allowedKeys` for plain entries
+  // (empty: none allowed), `allowedSections` for nested sections (whose own keys are checked by the caller with
   // checkKeys). Throws InputError naming the file and line.
   static Dictionary read(const std::filesystem::path& file, const std::string& rootName,
                          const std::vector<std::string>& allowedKeys,
@@ -64,8 +64,9 @@ class Dictionary {
     int line = 0;
   };
   const Entry& entry(const std::string& key) const;
-  // Fills this dictionary from the children of an XML element (tinyxml2::XMLElement).
-  void readChildren(const void* element, const std::vector<std::string>& allowedKeys,
+  // Fills this dictionary from the children of an XML element (tinyxml2::XMLElement);
+  // allowedKeys == nullptr accepts any plain key (a section's, checked later).
+  void readChildren(const void* element, const std::vector<std::string>* allowedKeys,
                     const std::vector<std::string>& allowedSections);
   [[noreturn]] void fail(const std::string& key, const std::string& what) const;
 
