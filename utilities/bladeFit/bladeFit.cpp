@@ -1,5 +1,5 @@
 // bladeFit: fits the blade shape parameters to the scattered points of a blade.
-//   reads  constant/bladePoints.dat
+//   reads  constant/bladePoints.dat, system/bladeFitDict.xml (optional)
 //   writes constant/bladeParameters.xml, constant/bladeProfile.dat
 #include <cstdio>
 #include <iostream>
@@ -10,6 +10,8 @@
 #include "passageMesh/blade/BladeShape.hpp"
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/CommandLine.hpp"
+#include "passageMesh/core/Dictionary.hpp"
+#include "passageMesh/core/InputError.hpp"
 #include "passageMesh/core/PointFile.hpp"
 
 using namespace passageMesh;
@@ -21,15 +23,35 @@ int main(int argc, char* argv[]) {
                     "constant/bladePoints.dat; writes constant/bladeParameters.xml and\n"
                     "constant/bladeProfile.dat.");
     cli.addOptions()
-        ("profilePoints", boost::program_options::value<int>()->default_value(2000),
-         "points written to bladeProfile.dat (at least 2000)")
         ("threads", boost::program_options::value<int>()->default_value(0),
          "threads for the multi-start search (0 = all cores; the result does not depend on it)");
     if (!cli.parse(argc, argv)) return 0;
-    const int profilePoints = cli.values()["profilePoints"].as<int>();
-    if (profilePoints < 2000)
-      throw std::runtime_error("-profilePoints " + std::to_string(profilePoints) +
-                               ": expected at least 2000");
+
+    BladeFitOptions options;
+    options.threads = cli.values()["threads"].as<int>();
+    int profilePoints = 2000;
+    const auto dictFile = cli.caseDir() / "system" / "bladeFitDict.xml";
+    if (std::filesystem::exists(dictFile)) {
+      const Dictionary dict = Dictionary::read(
+          dictFile, "bladeFitDict", {"profilePoints", "targetMaxDeviation", "maxRounds"});
+      auto refuse = [&](const std::string& key, const std::string& expected) {
+        throw InputError(dictFile.string(), dict.line(key),
+                         "<" + key + "> " + dict.text(key) + " is out of range, expected " + expected);
+      };
+      if (dict.has("profilePoints")) {
+        profilePoints = static_cast<int>(dict.integer("profilePoints"));
+        if (profilePoints < 2000 || profilePoints > 1000000) refuse("profilePoints", "2000..1000000");
+      }
+      if (dict.has("targetMaxDeviation")) {
+        options.targetMaxDeviation = dict.scalar("targetMaxDeviation");
+        if (!(options.targetMaxDeviation > 0 && options.targetMaxDeviation <= 0.1))
+          refuse("targetMaxDeviation", "a fraction of the chord in (0, 0.1]");
+      }
+      if (dict.has("maxRounds")) {
+        options.maxRounds = static_cast<int>(dict.integer("maxRounds"));
+        if (options.maxRounds < 1 || options.maxRounds > 4) refuse("maxRounds", "1..4");
+      }
+    }
 
     const auto constant = cli.caseDir() / "constant";
     const PointSet input = readPointFile(constant / "bladePoints.dat");
@@ -38,8 +60,6 @@ int main(int argc, char* argv[]) {
                 input.file.c_str(), ordered.reversed ? "clockwise, reversed" : "counter-clockwise",
                 ordered.closed ? "closed loop" : "open loop");
 
-    BladeFitOptions options;
-    options.threads = cli.values()["threads"].as<int>();
     const BladeFitResult fit = fitBlade(ordered.points, options);
     const BladeParameters& p = fit.parameters;
     std::printf("  chord %.9g m, stagger %.6g deg, thetaLe %.6g deg, thetaTe %.6g deg\n", p.chord,

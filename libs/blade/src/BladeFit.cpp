@@ -316,7 +316,7 @@ BladeFitResult fitBlade(const std::vector<Eigen::Vector2d>& points,
     if (best.valid && bestMax <= options.targetMaxDeviation * best.parameters.chord) break;
     // A round that gained little says the shape is as close as the parametrization gets
     // (real, measured blades), not that a better basin was missed.
-    if (round > 0 && bestMax > 0.9 * previousMax) break;
+    if (round > 0 && bestMax > (1 - options.minRoundGain) * previousMax) break;
   }
   result.parameters = best.parameters;
 

@@ -22,9 +22,10 @@ struct BladeFitOptions {
   double gridSpacing = 25;  // [deg]; later rounds shift the grid by half of it
   // Rounds of the search, stopped once the maximum deviation of the points from the
   // fitted profile is within targetMaxDeviation (a fraction of the chord), or when a round
-  // improved it by less than 10 %.
+  // improved it by less than the fraction minRoundGain.
   int maxRounds = 4;
   double targetMaxDeviation = 1e-4;
+  double minRoundGain = 0.1;
   int coarsePoints = 150;    // subsample size of the coarse stage
   int refinePoints = 400;    // subsample size of the refined starts (the polish uses all)
   int coarseIterations = 20;
