@@ -23,6 +23,8 @@ const Reference references[] = {{"LS89", 4.0e-5, 2.43e-4},
                                 {"T106A", 1e-6 * 99.4885, 5e-6 * 99.4885},
                                 {"SIRT", 1.27e-4, 3.57e-4}};
 
+void PrintTo(const Reference& r, std::ostream* os) { *os << r.blade; }
+
 class TutorialFit : public ::testing::TestWithParam<Reference> {};
 
 }  // namespace

@@ -151,11 +151,22 @@ struct Start {
 };
 
 Start solveFrom(const std::vector<Eigen::Vector2d>& points, const BladeParameters& guess,
-                int maxIterations, double power = 2, double scale = 1) {
+                int maxIterations, double power, double scale) {
   Start s{guess.toArray(), 0, 0};
-  ceres::Problem problem;
-  problem.AddResidualBlock(new ProfileDistanceCost(points, power, scale), nullptr,
-                           s.values.data());
+  auto* cost = new ProfileDistanceCost(points, power, scale);
+  ceres::Problem problem;  // owns `cost`
+  problem.AddResidualBlock(cost, nullptr, s.values.data());
+  // A start whose Jacobian is not defined (an edge point exactly on the edge tangent) is
+  // dropped here rather than handed to Ceres, which would only report the failure.
+  {
+    std::vector<double> residuals(cost->num_residuals()), jacobian(cost->num_residuals() * nP);
+    const double* parameters[] = {s.values.data()};
+    double* jacobians[] = {jacobian.data()};
+    if (!cost->Evaluate(parameters, residuals.data(), jacobians)) {
+      s.cost = std::numeric_limits<double>::infinity();
+      return s;
+    }
+  }
   // Bounds keep the parametrization defined: positive chord, handles and radii, and
   // non-negative thickness (negative thickness is an invalid blade).
   problem.SetParameterLowerBound(s.values.data(), 2, 0.2 * guess.chord);
@@ -222,9 +233,8 @@ bool better(const Candidate& a, const Candidate& b) {
 }
 
 // One round of the multi-start search: every guess fitted coarsely (few iterations on a
-// subsample), the best `refinedStarts` of them converged on all points, the best valid
-// result kept and then polished with the higher power of the distances, which trades a
-// little of the mean deviation for a lower maximum.
+// subsample), the best `refinedStarts` of them converged on a larger subsample, the best
+// valid result kept.
 Candidate searchRound(const std::vector<Eigen::Vector2d>& points,
                       const std::vector<Eigen::Vector2d>& subsample,
                       const std::vector<Eigen::Vector2d>& refineSample,
@@ -256,13 +266,6 @@ Candidate searchRound(const std::vector<Eigen::Vector2d>& points,
   iterations += std::accumulate(coarseIterations.begin(), coarseIterations.end(), 0) +
                 std::accumulate(refinedIterations.begin(), refinedIterations.end(), 0);
 
-  if (options.finalPower > 2) {
-    const double rms = std::sqrt(2 * best.cost / static_cast<double>(refineSample.size()));
-    Candidate c = solveStart(points, best.parameters, options.maxIterations, iterations,
-                             options.finalPower, rms / best.parameters.chord);
-    c.valid = checkBladeValidity(BladeShape(c.parameters)).valid;
-    if (c.valid || !best.valid) best = c;
-  }
   return best;
 }
 
@@ -308,15 +311,21 @@ BladeFitResult fitBlade(const std::vector<Eigen::Vector2d>& points,
     const Candidate c =
         searchRound(points, subsample, refineSample, guesses, options, result.iterations);
     const double max = deviationFromProfile(BladeShape(c.parameters), points).max;
-    const double previousMax = bestMax;
     if (round == 0 || (c.valid && !best.valid) || (c.valid == best.valid && max < bestMax)) {
       best = c;
       bestMax = max;
     }
     if (best.valid && bestMax <= options.targetMaxDeviation * best.parameters.chord) break;
-    // A round that gained little says the shape is as close as the parametrization gets
-    // (real, measured blades), not that a better basin was missed.
-    if (round > 0 && bestMax > (1 - options.minRoundGain) * previousMax) break;
+  }
+
+  // Polish the winner on all points with a higher power of the distances, which trades a
+  // little of the mean deviation for a lower maximum.
+  if (options.finalPower > 2) {
+    const double rms = std::sqrt(2 * best.cost / static_cast<double>(refineSample.size()));
+    Candidate c = solveStart(points, best.parameters, options.maxIterations, result.iterations,
+                             options.finalPower, rms / best.parameters.chord);
+    c.valid = checkBladeValidity(BladeShape(c.parameters)).valid;
+    if (c.valid || !best.valid) best = c;
   }
   result.parameters = best.parameters;
 

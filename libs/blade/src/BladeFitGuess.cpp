@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "passageMesh/blade/BladeFit.hpp"
+#include "passageMesh/blade/BladeShape.hpp"
 
 namespace passageMesh {
 
@@ -102,6 +103,43 @@ BladeParameters estimateInChordFrame(const std::vector<Eigen::Vector2d>& points,
   return p;
 }
 
+// Distance along the ray origin + s d (s > 0) to the first crossing of the closed polygon,
+// or a negative value when the ray misses it.
+double rayToPolygon(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& origin,
+                    const Eigen::Vector2d& d) {
+  double nearest = -1;
+  const std::size_t n = polygon.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Eigen::Vector2d a = polygon[k], e = polygon[(k + 1) % n] - a;
+    const double denominator = d.x() * e.y() - d.y() * e.x();
+    if (denominator == 0) continue;
+    const Eigen::Vector2d w = a - origin;
+    const double s = (w.x() * e.y() - w.y() * e.x()) / denominator;
+    const double t = (w.x() * d.y() - w.y() * d.x()) / denominator;
+    if (s > 0 && t >= 0 && t <= 1 && (nearest < 0 || s < nearest)) nearest = s;
+  }
+  return nearest;
+}
+
+// Thickness control values measured where they act: along the guessed camber line's
+// normal at the thickness spline's Greville abscissae. With the camber line right, this
+// puts the start close to the blade, which the chord-frame estimate does not on strongly
+// cambered blades.
+void thicknessAlongCamberNormals(const std::vector<Eigen::Vector2d>& points, BladeParameters& p) {
+  const BladeShape camber(p);
+  const double greville[6] = {1.0 / 15, 0.2, 0.4, 0.6, 0.8, 14.0 / 15};
+  for (int k = 0; k < 6; ++k) {
+    const Eigen::Vector2d c = camber.camberPoint(greville[k]);
+    const Eigen::Vector2d t = camber.camberDerivative(greville[k]).normalized();
+    const Eigen::Vector2d n(-t.y(), t.x());
+    const double up = rayToPolygon(points, c, n), down = rayToPolygon(points, c, -n);
+    if (up > 0 && down > 0) {
+      p.thicknessUpper[k] = up / p.chord;
+      p.thicknessLower[k] = down / p.chord;
+    }
+  }
+}
+
 }  // namespace
 
 BladeParameters guessBladeParameters(const std::vector<Eigen::Vector2d>& points) {
@@ -136,6 +174,7 @@ BladeParameters guessBladeParameters(const std::vector<Eigen::Vector2d>& points,
   // Keep the requested edge angles: they are what this start explores.
   p.thetaLe = thetaLe;
   p.thetaTe = thetaTe;
+  thicknessAlongCamberNormals(points, p);
   return p;
 }
 

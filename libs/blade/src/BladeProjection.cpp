@@ -7,16 +7,54 @@
 namespace passageMesh {
 
 BladeProjector::BladeProjector(const BladeShape& shape, int samplesPerSide)
-    : shape_(shape), u_(shape.sideParameters(samplesPerSide)) {
+    : shape_(shape), samplesPerSide_(samplesPerSide) {}
+
+void BladeProjector::buildSamples() const {
+  if (!u_.empty()) return;
+  u_ = shape_.sideParameters(samplesPerSide_);
   for (int s = 0; s < 2; ++s)
-    for (double u : u_) samples_[s].push_back(shape.point(static_cast<BladeSide>(s), u));
+    for (double u : u_) samples_[s].push_back(shape_.point(static_cast<BladeSide>(s), u));
+}
+
+double BladeProjector::newton(BladeSide side, const Eigen::Vector2d& q, double u, double lo,
+                              double hi) const {
+  // Newton on f(u) = (C(u) - q) . C'(u), kept inside [lo, hi].
+  const PiecewiseCubicCurve& curve = shape_.curve(side);
+  Eigen::Vector2d c, d1, d2;
+  for (int iteration = 0; iteration < 30; ++iteration) {
+    curve.evaluate(u, c, d1, d2);
+    const Eigen::Vector2d r = c - q;
+    double fp = d1.squaredNorm() + r.dot(d2);
+    if (fp <= 0) fp = d1.squaredNorm();  // keep the step a descent step
+    const double next = std::clamp(u - r.dot(d1) / fp, lo, hi);
+    // The distance is stationary at the foot point: an error of 1e-9 in u changes it by
+    // about 1e-18 chord.
+    const bool done = std::abs(next - u) < 1e-9;
+    u = next;
+    if (done) break;
+  }
+  return u;
+}
+
+FootPoint BladeProjector::footPoint(BladeSide side, double u, const Eigen::Vector2d& q) const {
+  FootPoint foot;
+  foot.side = side;
+  foot.u = u;
+  foot.point = shape_.point(side, u);
+  const double distance = (q - foot.point).norm();
+  // At the clamped ends the foot point may be off the normal; the sign still comes from
+  // the side of the tangent line.
+  foot.signedDistance =
+      (q - foot.point).dot(shape_.outwardNormal(side, u)) >= 0 ? distance : -distance;
+  return foot;
 }
 
 FootPoint BladeProjector::project(const Eigen::Vector2d& q) const {
-  // The nearest sample of each side, refined by Newton's method on
-  // f(u) = (C(u) - q) . C'(u) within the bracket of its neighbouring samples; the nearer
-  // of the two refined points is the foot point. Refining both sides matters near a thin
-  // edge, where the nearest sample may lie on the other side.
+  // The nearest sample of each side, refined by Newton's method within the bracket of its
+  // neighbouring samples; the nearer of the two refined points is the foot point.
+  // Refining both sides matters near a thin edge, where the nearest sample may lie on the
+  // other side.
+  buildSamples();
   FootPoint best;
   double bestDistance = std::numeric_limits<double>::max();
   for (int s = 0; s < 2; ++s) {
@@ -32,38 +70,12 @@ FootPoint BladeProjector::project(const Eigen::Vector2d& q) const {
     }
     const double lo = u_[nearest == 0 ? 0 : nearest - 1];
     const double hi = u_[std::min(nearest + 1, u_.size() - 1)];
-    const auto& cp = shape_.sideControlPoints(side);
-    double u = u_[nearest];
-    Eigen::Vector2d point = samples_[s][nearest];
-    for (int iteration = 0; iteration < 30; ++iteration) {
-      const CubicBasis b = cubicBasis(sideControlCount, u);
-      point = combine(b, b.value, cp.data());
-      const Eigen::Vector2d r = point - q;
-      const Eigen::Vector2d d1 = combine(b, b.d1, cp.data());
-      const Eigen::Vector2d d2 = combine(b, b.d2, cp.data());
-      double fp = d1.squaredNorm() + r.dot(d2);
-      if (fp <= 0) fp = d1.squaredNorm();  // keep the step a descent step
-      const double next = std::clamp(u - r.dot(d1) / fp, lo, hi);
-      // The distance is stationary at the foot point, so 1e-11 in u is far below
-      // round-off in the distance.
-      const bool done = std::abs(next - u) < 1e-11;
-      u = next;
-      if (done) break;
-    }
-    point = shape_.point(side, u);
-    const double distance = (q - point).squaredNorm();
-    if (distance < bestDistance) {
-      bestDistance = distance;
-      best.side = side;
-      best.u = u;
-      best.point = point;
+    const FootPoint foot = footPoint(side, newton(side, q, u_[nearest], lo, hi), q);
+    if (std::abs(foot.signedDistance) < bestDistance) {
+      bestDistance = std::abs(foot.signedDistance);
+      best = foot;
     }
   }
-  const double distance = std::sqrt(bestDistance);
-  const Eigen::Vector2d normal = shape_.outwardNormal(best.side, best.u);
-  // At the clamped ends the foot point may be off the normal; the sign still comes from
-  // the side of the tangent line.
-  best.signedDistance = (q - best.point).dot(normal) >= 0 ? distance : -distance;
   return best;
 }
 

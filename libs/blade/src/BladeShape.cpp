@@ -6,26 +6,27 @@ namespace passageMesh {
 
 BladeShape::BladeShape(const BladeParameters& parameters)
     : parameters_(parameters),
-      controlPoints_(bladeControlPoints<double>(parameters.toArray().data())) {}
+      controlPoints_(bladeControlPoints<double>(parameters.toArray().data())),
+      curves_{PiecewiseCubicCurve(controlPoints_.lower.data(), sideControlCount),
+              PiecewiseCubicCurve(controlPoints_.upper.data(), sideControlCount)} {}
 
 const std::array<Point2<double>, sideControlCount>& BladeShape::sideControlPoints(
     BladeSide side) const {
   return side == BladeSide::lower ? controlPoints_.lower : controlPoints_.upper;
 }
 
-Eigen::Vector2d BladeShape::point(BladeSide side, double u) const {
-  const CubicBasis b = cubicBasis(sideControlCount, u);
-  return combine(b, b.value, sideControlPoints(side).data());
-}
+Eigen::Vector2d BladeShape::point(BladeSide side, double u) const { return curve(side).point(u); }
 
 Eigen::Vector2d BladeShape::derivative(BladeSide side, double u) const {
-  const CubicBasis b = cubicBasis(sideControlCount, u);
-  return combine(b, b.d1, sideControlPoints(side).data());
+  Eigen::Vector2d c, d1, d2;
+  curve(side).evaluate(u, c, d1, d2);
+  return d1;
 }
 
 Eigen::Vector2d BladeShape::secondDerivative(BladeSide side, double u) const {
-  const CubicBasis b = cubicBasis(sideControlCount, u);
-  return combine(b, b.d2, sideControlPoints(side).data());
+  Eigen::Vector2d c, d1, d2;
+  curve(side).evaluate(u, c, d1, d2);
+  return d2;
 }
 
 Eigen::Vector2d BladeShape::outwardNormal(BladeSide side, double u) const {

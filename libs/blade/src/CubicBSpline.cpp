@@ -138,4 +138,37 @@ CubicBasis cubicBasis(int controlCount, double u) {
   return b;
 }
 
+PiecewiseCubicCurve::PiecewiseCubicCurve(const Eigen::Vector2d* control, int controlCount)
+    : spans_(controlCount - 3), coefficients_(controlCount - 3) {
+  const SpanPolynomials& table = spanPolynomials(controlCount);
+  for (int j = 0; j < spans_; ++j)
+    for (int p = 0; p < 4; ++p) {
+      Eigen::Vector2d c = Eigen::Vector2d::Zero();
+      for (int k = 0; k < 4; ++k) c += table.coefficients[j][k][p] * control[j + k];
+      coefficients_[j][p] = c;
+    }
+}
+
+int PiecewiseCubicCurve::span(double u, double& t) const {
+  u = std::clamp(u, 0.0, 1.0);
+  const int j = std::min(static_cast<int>(u * spans_), spans_ - 1);
+  t = u - (j + 0.5) / spans_;
+  return j;
+}
+
+void PiecewiseCubicCurve::evaluate(double u, Eigen::Vector2d& point, Eigen::Vector2d& d1,
+                                   Eigen::Vector2d& d2) const {
+  double t;
+  const auto& c = coefficients_[span(u, t)];
+  point = c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+  d1 = c[1] + t * (2 * c[2] + t * 3 * c[3]);
+  d2 = 2 * c[2] + t * 6 * c[3];
+}
+
+Eigen::Vector2d PiecewiseCubicCurve::point(double u) const {
+  double t;
+  const auto& c = coefficients_[span(u, t)];
+  return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+}
+
 }  // namespace passageMesh

@@ -99,7 +99,10 @@ BladeControlPoints<T> bladeControlPoints(const T* bsp) {
   auto edgePoint = [&](const Point2<T>& end, const Point2<T>& next, const Point2<T>& tangent,
                        const Point2<T>& sideNormal, const T& radius) {
     const T h = abs((next - end).dot(tangent));
-    return Point2<T>(end + sideNormal * sqrt(h * radius / 3.0));
+    // The 1e-9 chord floor keeps the derivative finite where h * radius -> 0 (a fit may
+    // pass there) and moves the point by at most 1e-9 chord.
+    const T floor = 1e-9 * chord;
+    return Point2<T>(end + sideNormal * sqrt(h * radius / 3.0 + floor * floor));
   };
   cp.upper[1] = edgePoint(cp.camber[0], cp.upper[2], tLe, nLe, radiusLe);
   cp.lower[1] = edgePoint(cp.camber[0], cp.lower[2], tLe, Point2<T>(-nLe), radiusLe);

@@ -21,14 +21,14 @@ struct BladeFitOptions {
   std::vector<double> trailingEdgeAngles{-50, -25, 0, 25, 50};
   double gridSpacing = 25;  // [deg]; later rounds shift the grid by half of it
   // Rounds of the search, stopped once the maximum deviation of the points from the
-  // fitted profile is within targetMaxDeviation (a fraction of the chord), or when a round
-  // improved it by less than the fraction minRoundGain.
+  // fitted profile is within targetMaxDeviation (a fraction of the chord). Measured blades
+  // never get that close (the parametrization cannot follow every detail) and take all
+  // rounds; a blade the parametrization can represent usually stops after the first.
   int maxRounds = 4;
   double targetMaxDeviation = 1e-4;
-  double minRoundGain = 0.1;
-  int coarsePoints = 150;    // subsample size of the coarse stage
-  int refinePoints = 400;    // subsample size of the refined starts (the polish uses all)
-  int coarseIterations = 20;
+  int coarsePoints = 100;    // subsample size of the coarse stage
+  int refinePoints = 300;    // subsample size of the refined starts (the polish uses all)
+  int coarseIterations = 15;
   int refinedStarts = 6;
   int threads = 0;  // for the starts; 0 = all cores (the result does not depend on it)
   // More starting points for the coarse stage (for example a previous fit).

@@ -47,9 +47,13 @@ class BladeShape {
   // One side sampled at `count` parameters with cosine spacing, leading to trailing edge.
   std::vector<double> sideParameters(int count) const;
 
+  // The side as piecewise polynomials, for fast repeated evaluation.
+  const PiecewiseCubicCurve& curve(BladeSide side) const { return curves_[static_cast<int>(side)]; }
+
  private:
   BladeParameters parameters_;
   BladeControlPoints<double> controlPoints_;
+  std::array<PiecewiseCubicCurve, 2> curves_;  // lower, upper
 };
 
 }  // namespace passageMesh

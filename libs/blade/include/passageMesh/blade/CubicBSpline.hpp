@@ -3,6 +3,7 @@
 // two derivatives at a parameter u in [0, 1]. The basis is plain double because every
 // spline in the suite is evaluated at known parameters; only control values may carry
 // derivative types (ceres::Jet), which keeps automatic differentiation cheap.
+#include <Eigen/Core>
 #include <array>
 #include <vector>
 
@@ -29,5 +30,23 @@ Value combine(const CubicBasis& b, const std::array<double, 4>& weights, const V
   for (int k = 1; k < 4; ++k) sum = sum + control[b.first + k] * weights[k];
   return sum;
 }
+
+// A clamped uniform cubic B-spline curve in the plane, converted once to one cubic
+// polynomial per span (Taylor form about the span's midpoint). Evaluating it costs about
+// twenty flops, against the basis recursion's hundreds: the foot-point projections of
+// bladeFit and the mesher's boundary sampling evaluate curves millions of times.
+class PiecewiseCubicCurve {
+ public:
+  PiecewiseCubicCurve() = default;
+  PiecewiseCubicCurve(const Eigen::Vector2d* control, int controlCount);
+
+  void evaluate(double u, Eigen::Vector2d& point, Eigen::Vector2d& d1, Eigen::Vector2d& d2) const;
+  Eigen::Vector2d point(double u) const;
+
+ private:
+  int span(double u, double& t) const;
+  int spans_ = 0;
+  std::vector<std::array<Eigen::Vector2d, 4>> coefficients_;  // [span][power]
+};
 
 }  // namespace passageMesh
