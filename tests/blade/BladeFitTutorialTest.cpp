@@ -43,4 +43,4 @@ TEST_P(TutorialFit, DeviationsNoLargerThanParaBlade) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Tutorials, TutorialFit, ::testing::ValuesIn(references),
-                         [](const auto& info) { return std::string(info.param.blade); });
+                         [](const auto& testInfo) { return std::string(testInfo.param.blade); });

@@ -51,6 +51,24 @@ Eigen::Vector2d BladeShape::camberDerivative(double u) const {
   return bezierCombine(controlPoints_.camber, BezierBasis(u).d1);
 }
 
+double BladeShape::camberY(double x) const {
+  const double x0 = leadingEdge().x(), x1 = trailingEdge().x();
+  if (x <= x0) return leadingEdge().y();
+  if (x >= x1) return trailingEdge().y();
+  // x(u) increases on [0, 1]: Newton's method safeguarded by bisection.
+  double lo = 0, hi = 1, u = (x - x0) / (x1 - x0);
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    const double f = camberPoint(u).x() - x;
+    if (f > 0) hi = u; else lo = u;
+    const double slope = camberDerivative(u).x();
+    double next = slope > 0 ? u - f / slope : 0.5 * (lo + hi);
+    if (next <= lo || next >= hi) next = 0.5 * (lo + hi);
+    if (std::abs(next - u) < 1e-15) break;
+    u = next;
+  }
+  return camberPoint(u).y();
+}
+
 double BladeShape::thickness(BladeSide side, double u) const {
   const auto& p = parameters_;
   std::array<double, thicknessControlCount> t;

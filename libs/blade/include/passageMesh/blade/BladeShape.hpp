@@ -38,6 +38,9 @@ class BladeShape {
 
   Eigen::Vector2d camberPoint(double u) const;
   Eigen::Vector2d camberDerivative(double u) const;
+  // The camber line's y at x, for x between the camber line's end points (clamped
+  // outside); the camber line of a valid blade is single-valued in x.
+  double camberY(double x) const;
   // The side's half-thickness function (a length) at camber parameter u.
   double thickness(BladeSide side, double u) const;
 

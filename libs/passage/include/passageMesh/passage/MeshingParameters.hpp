@@ -1,0 +1,48 @@
+#pragma once
+// The meshing parameters (method.md section 1): what the tools choose and the policy's
+// action. Lengths in metres. Read from system/meshDict.xml (docs/case-format.md).
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace passageMesh {
+
+struct MeshingParameters {
+  static constexpr int size = 8;
+
+  double yIn = 0;           // vertical offset of the periodic boundary at the inlet [m]
+  double yOut = 0;          // ... at the outlet [m]
+  double alphaCamber = 1;   // how much the periodic boundary follows the camber line
+  double betaIn = 0.5;      // O/H interface position as a fraction of xIn
+  double betaOut = 0.5;     // ... of xOut
+  int nT = 300;             // O-block nodes around the blade
+  double gammaLe = 1;       // node clustering towards the leading edge (0 = none)
+  double gammaTe = 1;       // ... towards the trailing edge
+
+  // The documented defaults (yIn = yOut = 0, alphaCamber 1 (the boundary midway between
+  // the camber lines, inside the passage for any blade thinner than the pitch),
+  // betaIn = betaOut = 0.5, nT 300, gammaLe = gammaTe = 1).
+  static MeshingParameters defaults();
+  // In the order above; nT as a double.
+  std::array<double, size> toArray() const;
+  static MeshingParameters fromArray(const std::array<double, size>& v);  // nT rounded
+  static const std::array<std::string, size>& names();
+  // The method's range box for a chord C: yIn, yOut in [-0.5C, 0.5C], alphaCamber [0, 1],
+  // betaIn, betaOut [0.1, 0.9], nT [100, 1000], gammaLe, gammaTe [0, 5].
+  static std::array<double, size> lowerBounds(double chord);
+  static std::array<double, size> upperBounds(double chord);
+};
+
+// Clips every parameter into the range box, adding one warning line per clipped value.
+MeshingParameters clipToRange(const MeshingParameters& p, double chord,
+                              std::vector<std::string>* warnings, const std::string& source);
+
+// Reads system/meshDict.xml. A missing file gives the defaults; a missing key takes its
+// default; an unknown key or a malformed value is an InputError; a value outside the range
+// box is clipped with a warning.
+MeshingParameters readMeshDict(const std::filesystem::path& file, double chord,
+                               std::vector<std::string>* warnings = nullptr);
+void writeMeshDict(const std::filesystem::path& file, const MeshingParameters& p);
+
+}  // namespace passageMesh

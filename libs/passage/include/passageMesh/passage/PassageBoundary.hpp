@@ -1,0 +1,47 @@
+#pragma once
+// The periodic passage boundary and the O/H block interfaces (method.md section 3).
+//
+// The leading and trailing edge are the camber line's end points (xLe, yLe) and its
+// trailing-edge point; y_camber(x) is the camber line. The lower periodic boundary is
+//   y_le + yIn - pitch/2                       upstream of the leading edge,
+//   a y_c(x) + (1 - a) y_l(x)                  along the blade (a = alphaCamber),
+//   y_te + yOut - pitch/2                      downstream of the trailing edge,
+// with y_l the straight line between the two end values and
+//   y_c(x) = y_camber(x) + yIn s(x) + yOut (1 - s(x)) - pitch/2,
+// which is the paper's formula when s = (y_camber - y_te) / (y_le - y_te). That s is
+// undefined for y_le = y_te (an impulse blade such as SIRT), so s blends it smoothly with
+// the linear s_x = (x_te - x) / (x_te - x_le):
+//   s = w s_paper + (1 - w) s_x,  w = D^2 / (D^2 + d^2),  D = y_le - y_te,  d = 0.05 chord,
+// written as w s_paper = D (y_camber - y_te) / (D^2 + d^2), which stays finite. For
+// |D| >> d it is the paper's formula; at both edges s is exactly 1 and 0, so the boundary
+// is continuous. The upper boundary is the lower one plus the pitch.
+#include <Eigen/Core>
+
+#include "passageMesh/blade/BladeShape.hpp"
+#include "passageMesh/passage/MeshingParameters.hpp"
+#include "passageMesh/passage/PassageCondition.hpp"
+
+namespace passageMesh {
+
+class PassageBoundary {
+ public:
+  PassageBoundary(const BladeShape& blade, const PassageCondition& condition,
+                  const MeshingParameters& parameters);
+
+  double inletX() const { return le_.x() - condition_.xIn; }
+  double outletX() const { return te_.x() + condition_.xOut; }
+  double inletInterfaceX() const { return le_.x() - parameters_.betaIn * condition_.xIn; }
+  double outletInterfaceX() const { return te_.x() + parameters_.betaOut * condition_.xOut; }
+  double pitch() const { return condition_.pitch; }
+
+  double lowerY(double x) const;
+  double upperY(double x) const { return lowerY(x) + condition_.pitch; }
+
+ private:
+  const BladeShape& blade_;
+  PassageCondition condition_;
+  MeshingParameters parameters_;
+  Eigen::Vector2d le_, te_;
+};
+
+}  // namespace passageMesh

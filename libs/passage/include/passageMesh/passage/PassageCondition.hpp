@@ -1,0 +1,26 @@
+#pragma once
+// The passage condition (method.md section 1): what the user has and the policy's state.
+// All lengths in metres. Read from system/passageDict.xml (docs/case-format.md).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace passageMesh {
+
+struct PassageCondition {
+  double pitch = 0;            // blade spacing
+  double xIn = 0;              // inlet distance upstream of the leading edge
+  double xOut = 0;             // outlet distance downstream of the trailing edge
+  int nO = 0;                  // nodes in the O-block (nT * nN)
+  double firstCellHeight = 0;  // first cell height normal to the blade
+};
+
+// Reads system/passageDict.xml; lengths may be given in chords ("0.5c"). Values that no
+// mesh can have (pitch <= 0, negative distances, nO < 100, firstCellHeight <= 0) are an
+// InputError naming file and line. Values outside the method's range (method.md section 1:
+// pitch 0.3..1 C, xIn and xOut 0..1 C, nO 10000..50000, firstCellHeight 2e-5..2e-4 C)
+// are used but reported in `warnings`: the policy was not trained there.
+PassageCondition readPassageDict(const std::filesystem::path& file, double chord,
+                                 std::vector<std::string>* warnings = nullptr);
+
+}  // namespace passageMesh

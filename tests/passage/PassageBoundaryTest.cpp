@@ -1,0 +1,113 @@
+#include "passageMesh/passage/PassageBoundary.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../blade/BladeTestData.hpp"
+
+using namespace passageMesh;
+
+namespace {
+
+PassageCondition condition(double chord) {
+  PassageCondition c;
+  c.pitch = 0.85 * chord;
+  c.xIn = c.xOut = 0.5 * chord;
+  c.nO = 30000;
+  c.firstCellHeight = 1.1e-4 * chord;
+  return c;
+}
+
+MeshingParameters parameters(double chord) {
+  MeshingParameters m;
+  m.yIn = 0.1 * chord;
+  m.yOut = -0.2 * chord;
+  m.alphaCamber = 0.7;
+  m.betaIn = 0.4;
+  m.betaOut = 0.6;
+  return m;
+}
+
+// The paper's formula, for blades with y_le far from y_te.
+double paperLowerY(const BladeShape& blade, const PassageCondition& c, const MeshingParameters& m,
+                   double x) {
+  const double yle = blade.leadingEdge().y(), yte = blade.trailingEdge().y();
+  const double xle = blade.leadingEdge().x(), xte = blade.trailingEdge().x();
+  const double yc = (yle + m.yIn - yte - m.yOut) / (yle - yte) * blade.camberY(x) +
+                    (yle * m.yOut - yte * m.yIn) / (yle - yte) - c.pitch / 2;
+  const double yl = yle + m.yIn - c.pitch / 2 +
+                    (yte + m.yOut - yle - m.yIn) * (x - xle) / (xte - xle);
+  return m.alphaCamber * yc + (1 - m.alphaCamber) * yl;
+}
+
+}  // namespace
+
+TEST(PassageBoundary, FollowsThePaperFormulaForAStaggeredBlade) {
+  const BladeShape blade(testData::typicalTurbineBlade());  // y_le - y_te = 0.64 chord
+  const double C = blade.parameters().chord;
+  const auto c = condition(C);
+  const auto m = parameters(C);
+  const PassageBoundary boundary(blade, c, m);
+  const double xle = blade.leadingEdge().x(), xte = blade.trailingEdge().x();
+  for (int k = 1; k < 50; ++k) {
+    const double x = xle + (xte - xle) * k / 50.0;
+    // The blend weight w = D^2/(D^2 + d^2) is 0.994 here: agree to 1 % of the offsets.
+    EXPECT_NEAR(boundary.lowerY(x), paperLowerY(blade, c, m, x), 0.01 * 0.3 * C) << x;
+    EXPECT_DOUBLE_EQ(boundary.upperY(x), boundary.lowerY(x) + c.pitch);
+  }
+  EXPECT_DOUBLE_EQ(boundary.lowerY(xle - 0.3 * C), blade.leadingEdge().y() + m.yIn - c.pitch / 2);
+  EXPECT_DOUBLE_EQ(boundary.lowerY(xte + 0.3 * C), blade.trailingEdge().y() + m.yOut - c.pitch / 2);
+  EXPECT_DOUBLE_EQ(boundary.inletX(), xle - c.xIn);
+  EXPECT_DOUBLE_EQ(boundary.inletInterfaceX(), xle - m.betaIn * c.xIn);
+  EXPECT_DOUBLE_EQ(boundary.outletInterfaceX(), xte + m.betaOut * c.xOut);
+}
+
+TEST(PassageBoundary, IsContinuousAndFiniteWhenEdgesAreLevel) {
+  // An impulse blade: stagger 0, so y_le == y_te exactly and the paper's formula divides
+  // by zero.
+  BladeParameters p = testData::typicalTurbineBlade();
+  p.stagger = 0;
+  p.thetaLe = 45;
+  p.thetaTe = -45;
+  const BladeShape blade(p);
+  ASSERT_EQ(blade.leadingEdge().y(), blade.trailingEdge().y());
+  const double C = p.chord;
+  const auto c = condition(C);
+  const auto m = parameters(C);
+  const PassageBoundary boundary(blade, c, m);
+  const double xle = blade.leadingEdge().x(), xte = blade.trailingEdge().x();
+  const double eps = 1e-9 * C;
+  EXPECT_NEAR(boundary.lowerY(xle + eps), boundary.lowerY(xle - eps), 1e-6 * C);
+  EXPECT_NEAR(boundary.lowerY(xte - eps), boundary.lowerY(xte + eps), 1e-6 * C);
+  for (int k = 0; k <= 100; ++k) {
+    const double x = xle + (xte - xle) * k / 100.0;
+    const double y = boundary.lowerY(x);
+    ASSERT_TRUE(std::isfinite(y));
+    // Here s is linear in x: the boundary is the camber line shifted by an offset going
+    // linearly from yIn to yOut, blended with the straight line.
+    const double s = (xte - x) / (xte - xle);
+    const double yc = blade.camberY(x) + m.yIn * s + m.yOut * (1 - s) - c.pitch / 2;
+    const double yl = blade.leadingEdge().y() + m.yIn * s + m.yOut * (1 - s) - c.pitch / 2;
+    EXPECT_NEAR(y, m.alphaCamber * yc + (1 - m.alphaCamber) * yl, 1e-12 * C);
+  }
+}
+
+TEST(PassageBoundary, AlphaZeroIsTheStraightLine) {
+  const BladeShape blade(testData::typicalTurbineBlade());
+  const double C = blade.parameters().chord;
+  auto m = parameters(C);
+  m.alphaCamber = 0;
+  const PassageBoundary boundary(blade, condition(C), m);
+  const double xle = blade.leadingEdge().x(), xte = blade.trailingEdge().x();
+  const double y0 = boundary.lowerY(xle), y1 = boundary.lowerY(xte + 1e-12);
+  EXPECT_NEAR(boundary.lowerY(0.5 * (xle + xte)), 0.5 * (y0 + y1), 1e-12 * C);
+}
+
+TEST(BladeShape, CamberYInvertsTheCamberLine) {
+  const BladeShape blade(testData::typicalTurbineBlade());
+  for (double u : {0.0, 0.1, 0.5, 0.93, 1.0}) {
+    const Eigen::Vector2d c = blade.camberPoint(u);
+    EXPECT_NEAR(blade.camberY(c.x()), c.y(), 1e-12);
+  }
+}

@@ -1,0 +1,74 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "passageMesh/core/InputError.hpp"
+#include "passageMesh/passage/MeshingParameters.hpp"
+#include "passageMesh/passage/PassageCondition.hpp"
+
+using namespace passageMesh;
+
+namespace {
+std::filesystem::path writeTemp(const std::string& name, const std::string& content) {
+  const auto dir = std::filesystem::temp_directory_path() / "passageMeshPassageDictTest";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / name) << content;
+  return dir / name;
+}
+}  // namespace
+
+TEST(PassageDict, ReadsLengthsInChordsAndWarnsOutsideTheMethodRange) {
+  const auto file = writeTemp("a.xml",
+                              "<passageDict><pitch>0.85c</pitch><xIn>0.5c</xIn><xOut>0.02</xOut>"
+                              "<nO>60000</nO><firstCellHeight>1.1e-4c</firstCellHeight></passageDict>");
+  std::vector<std::string> warnings;
+  const PassageCondition c = readPassageDict(file, 0.1, &warnings);
+  EXPECT_DOUBLE_EQ(c.pitch, 0.085);
+  EXPECT_DOUBLE_EQ(c.xOut, 0.02);
+  EXPECT_EQ(c.nO, 60000);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("<nO>"), std::string::npos) << warnings[0];
+}
+
+TEST(PassageDict, RefusesImpossibleValuesAndMissingKeys) {
+  auto dict = [](const std::string& pitch, const std::string& nO) {
+    return "<passageDict>\n<pitch>" + pitch + "</pitch>\n<xIn>0.5c</xIn>\n<xOut>0.5c</xOut>\n<nO>" +
+           nO + "</nO>\n<firstCellHeight>1e-5</firstCellHeight>\n</passageDict>";
+  };
+  try {
+    readPassageDict(writeTemp("b.xml", dict("-0.1", "30000")), 0.1);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("b.xml:2: <pitch> -0.1: expected a positive length"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(readPassageDict(writeTemp("c.xml", dict("0.1", "99")), 0.1), InputError);
+  EXPECT_THROW(readPassageDict(writeTemp("d.xml", "<passageDict><pitch>1</pitch></passageDict>"), 0.1),
+               InputError);
+}
+
+TEST(MeshDict, MissingFileGivesDefaultsAndOutOfRangeIsClippedWithAWarning) {
+  const auto none = std::filesystem::temp_directory_path() / "passageMeshNoSuchMeshDict.xml";
+  EXPECT_EQ(readMeshDict(none, 0.1).toArray(), MeshingParameters::defaults().toArray());
+  std::vector<std::string> warnings;
+  const auto p = readMeshDict(
+      writeTemp("m.xml", "<meshDict><betaIn>0.95</betaIn><yIn>0.2c</yIn><nT>400</nT></meshDict>"), 0.1,
+      &warnings);
+  EXPECT_DOUBLE_EQ(p.betaIn, 0.9);
+  EXPECT_DOUBLE_EQ(p.yIn, 0.02);
+  EXPECT_EQ(p.nT, 400);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("betaIn"), std::string::npos);
+  EXPECT_THROW(readMeshDict(writeTemp("n.xml", "<meshDict><beta>1</beta></meshDict>"), 0.1), InputError);
+}
+
+TEST(MeshDict, WritesAndReadsBack) {
+  MeshingParameters p;
+  p.yIn = -0.0123;
+  p.nT = 517;
+  p.gammaTe = 2.5;
+  const auto file = writeTemp("w.xml", "");
+  writeMeshDict(file, p);
+  EXPECT_EQ(readMeshDict(file, 0.1).toArray(), p.toArray());
+}
