@@ -67,19 +67,22 @@ TEST(BladeShape, ScalingTheChordScalesTheProfile) {
 }
 
 // method.md section 2: ParaBlade's own matched parameters, built as ParaBlade builds them,
-// sit on the SIRT points with mean/max deviation 1.25e-4/3.57e-4 m.
+// sit on the tutorial points with these mean/max deviations [m].
+namespace {
+Deviation paraBladeDeviation(const std::string& blade, const testData::ParaBladeSection& s) {
+  const auto points = readPointFile(testData::sharedBlade(blade)).points;
+  return testData::deviationFromPolyline(points, testData::paraBladeProfile(s, 20000));
+}
+}  // namespace
+
 TEST(BladeShape, ReproducesParaBladeReferenceProfileForSIRT) {
-  const auto points = readPointFile(testData::sharedBlade("SIRT")).points;
-  const auto profile = testData::paraBladeProfile(testData::paraBladeSIRT(), 20000);
-  const Deviation d = testData::deviationFromPolyline(points, profile);
+  const Deviation d = paraBladeDeviation("SIRT", testData::paraBladeSIRT());
   EXPECT_NEAR(d.mean, 1.25e-4, 0.03e-4);
   EXPECT_NEAR(d.max, 3.57e-4, 0.03e-4);
 }
 
 TEST(BladeShape, ReproducesParaBladeReferenceProfileForLS89) {
-  const auto points = readPointFile(testData::sharedBlade("LS89")).points;
-  const auto profile = testData::paraBladeProfile(testData::paraBladeLS89(), 20000);
-  const Deviation d = testData::deviationFromPolyline(points, profile);
+  const Deviation d = paraBladeDeviation("LS89", testData::paraBladeLS89());
   EXPECT_NEAR(d.mean, 7.3e-5, 0.3e-5);
   EXPECT_NEAR(d.max, 3.2e-4, 0.1e-4);
 }

@@ -4,17 +4,15 @@
 
 #include <fstream>
 
+#include "../TestFiles.hpp"
+
 #include "passageMesh/core/InputError.hpp"
 
 using namespace passageMesh;
 
 namespace {
 std::filesystem::path writeTemp(const std::string& name, const std::string& content) {
-  const auto dir = std::filesystem::temp_directory_path() / "passageMeshPointFileTest";
-  std::filesystem::create_directories(dir);
-  const auto file = dir / name;
-  std::ofstream(file) << content;
-  return file;
+  return testData::writeTempFile("passageMeshPointFileTest", name, content);
 }
 
 std::string errorOf(const std::string& content) {

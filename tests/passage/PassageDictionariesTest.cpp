@@ -2,6 +2,8 @@
 
 #include <fstream>
 
+#include "../TestFiles.hpp"
+
 #include "passageMesh/core/InputError.hpp"
 #include "passageMesh/passage/MeshingParameters.hpp"
 #include "passageMesh/passage/PassageCondition.hpp"
@@ -10,10 +12,7 @@ using namespace passageMesh;
 
 namespace {
 std::filesystem::path writeTemp(const std::string& name, const std::string& content) {
-  const auto dir = std::filesystem::temp_directory_path() / "passageMeshPassageDictTest";
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / name) << content;
-  return dir / name;
+  return testData::writeTempFile("passageMeshPassageDictTest", name, content);
 }
 }  // namespace
 

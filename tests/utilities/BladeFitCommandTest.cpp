@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "../blade/BladeTestData.hpp"
 #include "UtilityTestSupport.hpp"
 #include "passageMesh/blade/BladeParametersFile.hpp"
 #include "passageMesh/blade/BladeShape.hpp"
@@ -16,21 +17,7 @@ namespace {
 
 const std::string bladeFit = BLADEFIT_EXECUTABLE;
 
-BladeParameters blade() {
-  BladeParameters p;
-  p.xLe = 0.2;
-  p.yLe = -0.1;
-  p.chord = 0.05;
-  p.stagger = -35;
-  p.thetaLe = 15;
-  p.thetaTe = -60;
-  p.distLe = p.distTe = 0.35;
-  p.radiusLe = 0.04;
-  p.radiusTe = 0.008;
-  p.thicknessUpper = {0.12, 0.13, 0.11, 0.08, 0.04, 0.015};
-  p.thicknessLower = {0.05, 0.05, 0.045, 0.03, 0.02, 0.01};
-  return p;
-}
+BladeParameters blade() { return typicalTurbineBlade(); }
 
 std::string pointLines(std::vector<Eigen::Vector2d> points) {
   std::ostringstream s;
