@@ -235,8 +235,7 @@ bool better(const Candidate& a, const Candidate& b) {
 // One round of the multi-start search: every guess fitted coarsely (few iterations on a
 // subsample), the best `refinedStarts` of them converged on a larger subsample, the best
 // valid result kept.
-Candidate searchRound(const std::vector<Eigen::Vector2d>& points,
-                      const std::vector<Eigen::Vector2d>& subsample,
+Candidate searchRound(const std::vector<Eigen::Vector2d>& subsample,
                       const std::vector<Eigen::Vector2d>& refineSample,
                       const std::vector<BladeParameters>& guesses,
                       const BladeFitOptions& options, int& iterations) {
@@ -309,7 +308,7 @@ BladeFitResult fitBlade(const std::vector<Eigen::Vector2d>& points,
     result.starts += static_cast<int>(guesses.size());
     ++result.rounds;
     const Candidate c =
-        searchRound(points, subsample, refineSample, guesses, options, result.iterations);
+        searchRound(subsample, refineSample, guesses, options, result.iterations);
     const double max = deviationFromProfile(BladeShape(c.parameters), points).max;
     if (round == 0 || (c.valid && !best.valid) || (c.valid == best.valid && max < bestMax)) {
       best = c;

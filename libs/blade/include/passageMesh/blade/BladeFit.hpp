@@ -14,7 +14,7 @@
 namespace passageMesh {
 
 struct BladeFitOptions {
-  int maxIterations = 300;  // per refined start
+  int maxIterations = 60;  // Levenberg-Marquardt iterations per refined start and for the polish
   // Multi-start: edge camber angles relative to the guessed stagger [deg], every pair
   // fitted coarsely, then the best `refinedStarts` converged on all points.
   std::vector<double> leadingEdgeAngles{-75, -50, -25, 0, 25, 50, 75};
