@@ -1,0 +1,32 @@
+#pragma once
+// Node clustering functions of the mesher: maps of [0, 1] onto itself.
+#include <vector>
+
+namespace passageMesh {
+
+// One-sided hyperbolic-tangent clustering towards xi = 0 with strength gamma >= 0:
+//   1 - tanh(gamma (1 - xi)) / tanh(gamma);   gamma -> 0 gives xi (uniform).
+double tanhClusterStart(double xi, double gamma);
+// The same towards xi = 1:  tanh(gamma xi) / tanh(gamma).
+double tanhClusterEnd(double xi, double gamma);
+
+// Two-sided clustering with independent strengths at the two ends, used for the blade
+// nodes (gammaLE, gammaTE):
+//   f(xi) = (1 - xi) tanhClusterStart(xi, gammaStart) + xi tanhClusterEnd(xi, gammaEnd).
+// It is strictly increasing for all strengths (tanhClusterStart <= xi <= tanhClusterEnd,
+// both increasing), f(0) = 0, f(1) = 1; f'(0) = tanhClusterStart'(0) and
+// f'(1) = tanhClusterEnd'(1), so each end's spacing is set by its own gamma alone and
+// shrinks monotonically as that gamma grows. gamma = 0 at both ends is uniform.
+double tanhStretch(double xi, double gammaStart, double gammaEnd);
+
+// Distances 0 = s_0 < s_1 < ... < s_{n-1} = length of n nodes along a wall-normal line,
+// clustered towards the wall by tanhClusterStart with the strength that makes the first
+// spacing s_1 exactly `firstSpacing` (to round-off). Throws std::invalid_argument when
+// that is impossible: firstSpacing >= length / (n - 1) would need stretching away from the
+// wall, n < 2, or non-positive lengths.
+std::vector<double> wallClusteredDistances(int n, double length, double firstSpacing);
+
+// The clustering strength wallClusteredDistances uses.
+double wallClusteringStrength(int n, double length, double firstSpacing);
+
+}  // namespace passageMesh

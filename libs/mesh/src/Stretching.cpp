@@ -1,0 +1,62 @@
+#include "passageMesh/mesh/Stretching.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace passageMesh {
+
+namespace {
+// Below this strength the tanh ratios are replaced by their limit, the identity, whose
+// error there is O(gamma^2) ~ 1e-16.
+constexpr double uniformBelow = 1e-8;
+}  // namespace
+
+double tanhClusterStart(double xi, double gamma) {
+  if (gamma < uniformBelow) return xi;
+  // = 1 - tanh(gamma (1 - xi)) / tanh(gamma), written without the cancellation that loses
+  // digits near the wall (where the value is ~1e-5 and the ratio ~1 - 1e-5).
+  return std::sinh(gamma * xi) / (std::cosh(gamma * (1.0 - xi)) * std::sinh(gamma));
+}
+
+double tanhClusterEnd(double xi, double gamma) {
+  if (gamma < uniformBelow) return xi;
+  return std::tanh(gamma * xi) / std::tanh(gamma);
+}
+
+double tanhStretch(double xi, double gammaStart, double gammaEnd) {
+  return (1.0 - xi) * tanhClusterStart(xi, gammaStart) + xi * tanhClusterEnd(xi, gammaEnd);
+}
+
+double wallClusteringStrength(int n, double length, double firstSpacing) {
+  if (n < 2 || !(length > 0) || !(firstSpacing > 0))
+    throw std::invalid_argument("wall clustering: need n >= 2 and positive lengths");
+  const double h = 1.0 / (n - 1);
+  const double target = firstSpacing / length;
+  if (!(target < h))
+    throw std::invalid_argument("wall clustering: first spacing " + std::to_string(firstSpacing) +
+                                " is not below the uniform spacing " + std::to_string(length * h));
+  // s_1 / length = tanhClusterStart(h, gamma) falls monotonically from h (gamma = 0) to 0:
+  // bisection on gamma, then Newton polish is unnecessary at 200 halvings of a bracket.
+  double lo = 0, hi = 1;
+  while (tanhClusterStart(h, hi) > target) {
+    hi *= 2;
+    if (hi > 1e4) throw std::invalid_argument("wall clustering: first spacing too small");
+  }
+  for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * hi; ++iteration) {
+    const double mid = 0.5 * (lo + hi);
+    (tanhClusterStart(h, mid) > target ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+std::vector<double> wallClusteredDistances(int n, double length, double firstSpacing) {
+  const double gamma = wallClusteringStrength(n, length, firstSpacing);
+  std::vector<double> s(n);
+  for (int j = 0; j < n; ++j) s[j] = length * tanhClusterStart(static_cast<double>(j) / (n - 1), gamma);
+  s[0] = 0.0;
+  s[n - 1] = length;
+  return s;
+}
+
+}  // namespace passageMesh
