@@ -25,7 +25,8 @@ double tanhClusterEnd(double xi, double gamma) {
 }
 
 double tanhStretch(double xi, double gammaStart, double gammaEnd) {
-  return (1.0 - xi) * tanhClusterStart(xi, gammaStart) + xi * tanhClusterEnd(xi, gammaEnd);
+  const double w = xi * xi * (3.0 - 2.0 * xi);
+  return (1.0 - w) * tanhClusterStart(xi, gammaStart) + w * tanhClusterEnd(xi, gammaEnd);
 }
 
 double wallClusteringStrength(int n, double length, double firstSpacing) {

@@ -12,11 +12,13 @@ double tanhClusterEnd(double xi, double gamma);
 
 // Two-sided clustering with independent strengths at the two ends, used for the blade
 // nodes (gammaLE, gammaTE):
-//   f(xi) = (1 - xi) tanhClusterStart(xi, gammaStart) + xi tanhClusterEnd(xi, gammaEnd).
+//   f(xi) = (1 - w) tanhClusterStart(xi, gammaStart) + w tanhClusterEnd(xi, gammaEnd),
+//   w = xi^2 (3 - 2 xi).
 // It is strictly increasing for all strengths (tanhClusterStart <= xi <= tanhClusterEnd,
-// both increasing), f(0) = 0, f(1) = 1; f'(0) = tanhClusterStart'(0) and
-// f'(1) = tanhClusterEnd'(1), so each end's spacing is set by its own gamma alone and
-// shrinks monotonically as that gamma grows. gamma = 0 at both ends is uniform.
+// both increasing, w increasing), f(0) = 0, f(1) = 1. Since w and 1 - w vanish
+// quadratically at the ends, the spacing next to each end is set by that end's gamma
+// (the other gamma changes it by O(h^2) relative for spacing h) and shrinks
+// monotonically as that gamma grows. gamma = 0 at both ends is uniform.
 double tanhStretch(double xi, double gammaStart, double gammaEnd);
 
 // Distances 0 = s_0 < s_1 < ... < s_{n-1} = length of n nodes along a wall-normal line,
