@@ -1,0 +1,46 @@
+#pragma once
+// The O-block's outer boundary (method.md section 4): the closed loop made of the inlet
+// interface, the upper periodic segment, the outlet interface and the lower periodic
+// segment, carrying as many nodes as the blade loop, in the same (clockwise) order.
+//
+// Node i of the loop faces blade node i. The loop starts at the seam on the outlet
+// interface (facing the trailing edge) and runs down it, leftwards along the lower
+// periodic segment, up the inlet interface, rightwards along the upper periodic segment
+// and down the outlet interface back to the seam:
+//
+//   piece      nodes (i)                          intervals
+//   outlet low  0 .. a                            a   = outletLower
+//   lower per.  a .. b                            nP  = periodic
+//   inlet       b .. c                            inletLower + inletUpper
+//   upper per.  c .. d                            nP
+//   outlet up   d .. nT (= node 0 again)          outletUpper
+//
+// The counts share the blade's: the lower side's nodes face outlet-low, the lower periodic
+// segment and the inlet interface's lower part, the upper side's nodes the rest, in
+// proportion to the pieces' lengths. Both periodic segments carry the same count and the
+// same x values, bit for bit: y_upper = y_lower + pitch. Interface nodes are uniform in y
+// (the H-blocks beyond them have uniform cells); periodic nodes uniform in arc length.
+#include <Eigen/Core>
+#include <vector>
+
+#include "passageMesh/passage/PassageBoundary.hpp"
+
+namespace passageMesh {
+
+struct OuterLoop {
+  std::vector<Eigen::Vector2d> nodes;  // nT nodes, clockwise from the seam
+  int outletLower = 0, periodic = 0, inletLower = 0, inletUpper = 0, outletUpper = 0;
+
+  int lowerPeriodicBegin() const { return outletLower; }
+  int lowerPeriodicEnd() const { return outletLower + periodic; }  // inlet corner
+  int upperPeriodicBegin() const { return lowerPeriodicEnd() + inletLower + inletUpper; }
+  int upperPeriodicEnd() const { return upperPeriodicBegin() + periodic; }  // outlet corner
+};
+
+// `lowerSideIntervals`: the blade nodes from the trailing edge (i = 0) to the leading edge
+// (i = lowerSideIntervals); `nT` nodes in all. Throws std::invalid_argument when a piece
+// would get no interval.
+OuterLoop buildOuterLoop(const PassageBoundary& boundary, int nT, int lowerSideIntervals,
+                         double leadingEdgeY, double trailingEdgeY);
+
+}  // namespace passageMesh

@@ -1,0 +1,107 @@
+#include "passageMesh/mesh/OuterLoop.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace passageMesh {
+
+namespace {
+
+// Arc length of the lower periodic segment from xA (inlet interface) to x, tabulated.
+struct PeriodicArcLength {
+  std::vector<double> x, s;
+  PeriodicArcLength(const PassageBoundary& b, int samples) {
+    const double xA = b.inletInterfaceX(), xB = b.outletInterfaceX();
+    for (int k = 0; k <= samples; ++k) {
+      const double xk = xA + (xB - xA) * k / samples;
+      x.push_back(xk);
+      s.push_back(k == 0 ? 0.0
+                         : s.back() + std::hypot(xk - x[k - 1], b.lowerY(xk) - b.lowerY(x[k - 1])));
+    }
+  }
+  double length() const { return s.back(); }
+  double xAt(double length) const {
+    const auto it = std::lower_bound(s.begin(), s.end(), length);
+    if (it == s.begin()) return x.front();
+    if (it == s.end()) return x.back();
+    const std::size_t k = static_cast<std::size_t>(it - s.begin());
+    return x[k - 1] + (x[k] - x[k - 1]) * (length - s[k - 1]) / (s[k] - s[k - 1]);
+  }
+};
+
+// Splits `total` intervals over pieces of the given lengths (at least `minimum` each).
+std::vector<int> share(int total, const std::vector<double>& lengths, int minimum) {
+  double sum = 0;
+  for (double l : lengths) sum += l;
+  std::vector<int> n(lengths.size());
+  int given = 0;
+  for (std::size_t k = 0; k < lengths.size(); ++k) {
+    n[k] = std::max(minimum, static_cast<int>(std::lround(total * lengths[k] / sum)));
+    given += n[k];
+  }
+  // Put the rounding difference on the longest piece.
+  const auto longest = std::max_element(lengths.begin(), lengths.end()) - lengths.begin();
+  n[static_cast<std::size_t>(longest)] += total - given;
+  return n;
+}
+
+}  // namespace
+
+OuterLoop buildOuterLoop(const PassageBoundary& boundary, int nT, int lowerSideIntervals,
+                         double leadingEdgeY, double trailingEdgeY) {
+  const double xA = boundary.inletInterfaceX(), xB = boundary.outletInterfaceX();
+  const double pitch = boundary.pitch();
+  const double yLowA = boundary.lowerY(xA), yLowB = boundary.lowerY(xB);
+  const PeriodicArcLength arc(boundary, 2000);
+  // Where the edges face the interfaces, kept a tenth of the pitch inside them.
+  const double margin = 0.1 * pitch;
+  const double yMid = std::clamp(leadingEdgeY, yLowA + margin, yLowA + pitch - margin);
+  const double ySeam = std::clamp(trailingEdgeY, yLowB + margin, yLowB + pitch - margin);
+
+  const int upperSideIntervals = nT - lowerSideIntervals;
+  const auto lower = share(lowerSideIntervals, {ySeam - yLowB, arc.length(), yMid - yLowA}, 1);
+  const auto upper =
+      share(upperSideIntervals, {yLowA + pitch - yMid, arc.length(), yLowB + pitch - ySeam}, 1);
+  OuterLoop loop;
+  // Both periodic segments need one count: the mean, the difference taken up by the
+  // interface pieces of each side.
+  loop.periodic = std::max(2, (lower[1] + upper[1]) / 2);
+  loop.outletLower = lower[0];
+  loop.inletLower = lowerSideIntervals - loop.outletLower - loop.periodic;
+  loop.inletUpper = upper[0];
+  loop.outletUpper = upperSideIntervals - loop.inletUpper - loop.periodic;
+  auto fix = [](int& a, int& b) {  // keep both of a pair of pieces >= 1
+    if (a < 1) { b -= 1 - a; a = 1; }
+    if (b < 1) { a -= 1 - b; b = 1; }
+  };
+  fix(loop.outletLower, loop.inletLower);
+  fix(loop.inletUpper, loop.outletUpper);
+  if (loop.outletLower < 1 || loop.inletLower < 1 || loop.inletUpper < 1 || loop.outletUpper < 1)
+    throw std::invalid_argument("outer loop: too few nodes for the pieces of the boundary");
+
+  // Interfaces uniform in y over the whole pitch: the seam and the inlet split move to the
+  // node the counts give them.
+  const double dyOut = pitch / (loop.outletLower + loop.outletUpper);
+  const double dyIn = pitch / (loop.inletLower + loop.inletUpper);
+  auto& p = loop.nodes;
+  p.reserve(nT);
+  for (int k = 0; k < loop.outletLower; ++k)  // seam down to the lower outlet corner
+    p.emplace_back(xB, yLowB + (loop.outletLower - k) * dyOut);
+  std::vector<double> periodicX(loop.periodic + 1);
+  for (int k = 0; k <= loop.periodic; ++k)
+    periodicX[k] = k == 0 ? xA : (k == loop.periodic ? xB : arc.xAt(arc.length() * k / loop.periodic));
+  for (int k = loop.periodic; k > 0; --k)  // lower periodic, xB to xA (corner at xA next)
+    p.emplace_back(periodicX[k], boundary.lowerY(periodicX[k]));
+  for (int k = 0; k < loop.inletLower + loop.inletUpper; ++k)  // inlet, bottom to top
+    p.emplace_back(xA, yLowA + k * dyIn);
+  for (int k = 0; k < loop.periodic; ++k)  // upper periodic, xA to xB
+    p.emplace_back(periodicX[k], boundary.upperY(periodicX[k]));
+  for (int k = 0; k < loop.outletUpper; ++k)  // outlet, top down to just above the seam
+    p.emplace_back(xB, yLowB + pitch - k * dyOut);
+  if (static_cast<int>(p.size()) != nT)
+    throw std::logic_error("outer loop: node count mismatch");
+  return loop;
+}
+
+}  // namespace passageMesh

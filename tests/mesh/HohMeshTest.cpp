@@ -1,0 +1,92 @@
+// Structure of the HOH mesh: node counts, exact periodic images, point-matched interfaces,
+// uniform H-blocks. (Cell validity needs the elliptic smoother: issue 3.)
+#include "passageMesh/mesh/HohMesh.hpp"
+
+#include <gtest/gtest.h>
+
+#include "../blade/BladeTestData.hpp"
+#include "passageMesh/mesh/CgnsWriter.hpp"
+#include "passageMesh/mesh/OuterLoop.hpp"
+#include "passageMesh/passage/PassageBoundary.hpp"
+
+using namespace passageMesh;
+
+namespace {
+
+PassageCondition paperCondition(double chord) {
+  PassageCondition c;
+  c.pitch = 0.85 * chord;
+  c.xIn = c.xOut = 0.5 * chord;
+  c.nO = 30000;
+  c.firstCellHeight = 1.1e-4 * chord;
+  return c;
+}
+
+}  // namespace
+
+TEST(OuterLoop, PeriodicNodesAreExactImagesAndCountsAddUp) {
+  const BladeShape blade(testData::typicalTurbineBlade());
+  const double C = blade.parameters().chord;
+  MeshingParameters m;
+  m.yIn = 0.1 * C;
+  m.alphaCamber = 0.6;
+  const PassageBoundary boundary(blade, paperCondition(C), m);
+  const OuterLoop loop = buildOuterLoop(boundary, 300, 140, blade.leadingEdge().y(),
+                                        blade.trailingEdge().y());
+  ASSERT_EQ(loop.nodes.size(), 300u);
+  EXPECT_EQ(loop.outletLower + 2 * loop.periodic + loop.inletLower + loop.inletUpper +
+                loop.outletUpper,
+            300);
+  for (int k = 0; k <= loop.periodic; ++k) {
+    const auto& lower = loop.nodes[loop.lowerPeriodicEnd() - k];
+    const auto& upper = loop.nodes[loop.upperPeriodicBegin() + k];
+    EXPECT_EQ(lower.x(), upper.x()) << k;
+    EXPECT_NEAR(upper.y() - lower.y(), 0.85 * C, 1e-12 * C) << k;
+    EXPECT_NEAR(lower.y(), boundary.lowerY(lower.x()), 1e-15);
+  }
+  EXPECT_EQ(loop.nodes[loop.lowerPeriodicEnd()].x(), boundary.inletInterfaceX());
+  EXPECT_EQ(loop.nodes[loop.upperPeriodicEnd() % 300].x(), boundary.outletInterfaceX());
+}
+
+TEST(HohMesh, BlocksArePointMatchedAndPeriodic) {
+  const BladeShape blade(testData::typicalTurbineBlade());
+  const double C = blade.parameters().chord;
+  const PassageCondition c = paperCondition(C);
+  const HohMesh hoh = buildHohMesh(blade, c, MeshingParameters::defaults());
+  ASSERT_EQ(hoh.mesh.blocks.size(), 3u);
+  const auto& o = hoh.mesh.blocks[1];
+  EXPECT_EQ(o.name, "OBlock");
+  EXPECT_EQ(o.ni, 301);
+  EXPECT_EQ(o.nj, 100);
+  // The writer's checks: ranges on block edges, equal counts, connected nodes coincide
+  // (after the pitch for periodic pairs).
+  EXPECT_NO_THROW(validateStructuredMesh(hoh.mesh));
+  // First cell height exactly along the line direction at every wall node.
+  for (int i = 0; i < o.ni; ++i) {
+    const double h = std::hypot(o.xAt(i, 1) - o.xAt(i, 0), o.yAt(i, 1) - o.yAt(i, 0));
+    EXPECT_NEAR(h, c.firstCellHeight, 1e-12 * C) << i;
+  }
+  // H-blocks: uniform cells.
+  for (int b : {0, 2}) {
+    const auto& h = hoh.mesh.blocks[b];
+    const double dx = h.xAt(1, 0) - h.xAt(0, 0), dy = h.yAt(0, 1) - h.yAt(0, 0);
+    for (int j = 0; j + 1 < h.nj; ++j)
+      for (int i = 0; i + 1 < h.ni; ++i) {
+        EXPECT_NEAR(h.xAt(i + 1, j) - h.xAt(i, j), dx, 1e-12 * C);
+        EXPECT_NEAR(h.yAt(i, j + 1) - h.yAt(i, j), dy, 1e-12 * C);
+      }
+  }
+}
+
+TEST(HohMesh, FindsFoldedCells) {
+  StructuredMesh mesh;
+  StructuredBlock b;
+  b.name = "B";
+  b.ni = b.nj = 2;
+  b.x = {0, 1, 0, 1};
+  b.y = {0, 0, 1, 1};
+  mesh.blocks = {b};
+  EXPECT_EQ(findInvalidCell(mesh), "");
+  mesh.blocks[0].x = {0, 1, 1, 0};  // corners swapped: a bow tie
+  EXPECT_NE(findInvalidCell(mesh), "");
+}
