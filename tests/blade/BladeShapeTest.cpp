@@ -70,7 +70,8 @@ TEST(BladeShape, ScalingTheChordScalesTheProfile) {
 // sit on the tutorial points with these mean/max deviations [m].
 namespace {
 Deviation paraBladeDeviation(const std::string& blade, const testData::ParaBladeSection& s) {
-  const auto points = readPointFile(testData::sharedBlade(blade)).points;
+  // The tutorial copies hold the same points as shared/blades (and ship with the project).
+  const auto points = readPointFile(testData::tutorialPoints(blade)).points;
   return testData::deviationFromPolyline(points, testData::paraBladeProfile(s, 20000));
 }
 }  // namespace

@@ -13,11 +13,6 @@
 
 namespace passageMesh::testData {
 
-inline std::filesystem::path sharedBlade(const std::string& name) {
-  return std::filesystem::path(PASSAGEMESH_SOURCE_DIR) / ".." / "shared" / "blades" /
-         (name + ".dat");
-}
-
 inline std::filesystem::path tutorialPoints(const std::string& name) {
   return std::filesystem::path(PASSAGEMESH_SOURCE_DIR) / "tutorials" / name / "constant" /
          "bladePoints.dat";

@@ -33,6 +33,13 @@ TEST(PointFile, ReadsPointsCommentsAndLineNumbers) {
   EXPECT_EQ(set.lines[1], 4);
 }
 
+TEST(PointFile, AcceptsByteOrderMarkCarriageReturnsAndTabs) {
+  const auto set = readPointFile(writeTemp("bom.dat", "\xEF\xBB\xBF" "1\t2\r\n3 4\r\n"));
+  ASSERT_EQ(set.points.size(), 2u);
+  EXPECT_EQ(set.points[0], Eigen::Vector2d(1, 2));
+  EXPECT_EQ(set.points[1], Eigen::Vector2d(3, 4));
+}
+
 TEST(PointFile, BadContentNamesFileAndLine) {
   EXPECT_NE(errorOf("").find("no points"), std::string::npos);
   EXPECT_NE(errorOf("1 2\n3\n").find("bad.dat:2: expected two numbers"), std::string::npos);

@@ -8,7 +8,9 @@
 #include "../blade/BladeTestData.hpp"
 #include "UtilityTestSupport.hpp"
 #include "passageMesh/blade/BladeParametersFile.hpp"
+#include "passageMesh/blade/BladeProjection.hpp"
 #include "passageMesh/blade/BladeShape.hpp"
+#include "passageMesh/core/PointFile.hpp"
 
 using namespace passageMesh;
 using namespace passageMesh::testData;
@@ -35,12 +37,13 @@ void expectRefused(const std::string& name, const char* points, const std::strin
   if (points) writeText(dir / "constant" / "bladePoints.dat", points);
   if (!dictionary.empty()) writeText(dir / "system" / "bladeFitDict.xml", dictionary);
   writeText(dir / "constant" / "bladeParameters.xml", "sentinel");
+  writeText(dir / "constant" / "bladeProfile.dat", "sentinel");
   const RunResult r = runTool(bladeFit, dir);
   EXPECT_NE(r.exitCode, 0) << name;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << name << ": " << r.err;
   EXPECT_NE(r.err.find(expected), std::string::npos) << name << ": " << r.err;
   EXPECT_EQ(readText(dir / "constant" / "bladeParameters.xml"), "sentinel") << name;
-  EXPECT_FALSE(std::filesystem::exists(dir / "constant" / "bladeProfile.dat")) << name;
+  EXPECT_EQ(readText(dir / "constant" / "bladeProfile.dat"), "sentinel") << name;
   for (const auto& entry : std::filesystem::directory_iterator(dir / "constant"))
     EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
 }
@@ -59,15 +62,46 @@ TEST(BladeFitCommand, FitsPointsAndWritesBothFiles) {
   EXPECT_TRUE(r.err.empty()) << r.err;
   const BladeParameters fitted = readBladeParametersFile(dir / "constant" / "bladeParameters.xml");
   EXPECT_NEAR(fitted.chord, blade().chord, 1e-3 * blade().chord);
-  const std::string profile = readText(dir / "constant" / "bladeProfile.dat");
-  EXPECT_GE(std::count(profile.begin(), profile.end(), '\n'), 2000);
+  // 2000 distinct points plus the first repeated: a closed loop.
+  const auto profile = readPointFile(dir / "constant" / "bladeProfile.dat").points;
+  ASSERT_EQ(profile.size(), 2001u);
+  EXPECT_EQ(profile.front(), profile.back());
+  EXPECT_LT(deviationFromProfile(BladeShape(blade()), profile).max, 1e-4 * blade().chord);
+  const std::string xml = readText(dir / "constant" / "bladeParameters.xml");
+  EXPECT_NE(xml.find("<points>300</points>"), std::string::npos);  // the closing repeat dropped
 }
 
-TEST(BladeFitCommand, HelpAndVersionExitZero) {
+TEST(BladeFitCommand, CommandLine) {
   const auto dir = freshCase("bladeFit_help");
-  EXPECT_EQ(runTool(bladeFit, dir, "-help").exitCode, 0);
-  EXPECT_EQ(runTool(bladeFit, dir, "--version").exitCode, 0);
+  RunResult r = runTool(bladeFit, dir, "-help");
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_NE(r.out.find("-case"), std::string::npos);
+  r = runTool(bladeFit, dir, "--version");
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_NE(r.out.find("passageMesh"), std::string::npos);
   EXPECT_NE(runTool(bladeFit, dir, "-nonsense").exitCode, 0);
+  // A stray word (a case name without -case) and abbreviations are refused.
+  r = runTool(bladeFit, dir, "otherCase");
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(runTool(bladeFit, dir, "-cas .").exitCode, 0);
+  EXPECT_NE(runTool(bladeFit, dir, "-threads -1").exitCode, 0);
+  r = runCommand(bladeFit, "-case /nonexistent/case", dir);
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.err.find("case directory not found"), std::string::npos) << r.err;
+}
+
+TEST(BladeFitCommand, AFailedWriteLeavesEveryResultAsItWas) {
+  const auto dir = freshCase("bladeFit_unwritable");
+  writeText(dir / "constant" / "bladePoints.dat", pointLines(BladeShape(blade()).sampleLoop(200)));
+  writeText(dir / "constant" / "bladeProfile.dat", "sentinel");
+  std::filesystem::create_directories(dir / "constant" / "bladeParameters.xml");  // cannot be replaced
+  const RunResult r = runTool(bladeFit, dir, "-threads 1");
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.err.find("bladeParameters.xml: cannot replace"), std::string::npos) << r.err;
+  EXPECT_EQ(readText(dir / "constant" / "bladeProfile.dat"), "sentinel");
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "constant"))
+    EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
 }
 
 TEST(BladeFitCommand, RefusesBadPointFiles) {

@@ -29,6 +29,9 @@ int main(int argc, char* argv[]) {
 
     BladeFitOptions options;
     options.threads = cli.values()["threads"].as<int>();
+    if (options.threads < 0)
+      throw std::runtime_error("-threads " + std::to_string(options.threads) +
+                               ": expected 0 (all cores) or a positive count");
     int profilePoints = 2000;
     const auto dictFile = cli.caseDir() / "system" / "bladeFitDict.xml";
     if (std::filesystem::exists(dictFile)) {
@@ -39,8 +42,9 @@ int main(int argc, char* argv[]) {
                          "<" + key + "> " + dict.text(key) + " is out of range, expected " + expected);
       };
       if (dict.has("profilePoints")) {
-        profilePoints = static_cast<int>(dict.integer("profilePoints"));
-        if (profilePoints < 2000 || profilePoints > 1000000) refuse("profilePoints", "2000..1000000");
+        const long n = dict.integer("profilePoints");
+        if (n < 2000 || n > 1000000) refuse("profilePoints", "2000..1000000");
+        profilePoints = static_cast<int>(n);
       }
       if (dict.has("targetMaxDeviation")) {
         options.targetMaxDeviation = dict.scalar("targetMaxDeviation");
@@ -48,17 +52,18 @@ int main(int argc, char* argv[]) {
           refuse("targetMaxDeviation", "a fraction of the chord in (0, 0.1]");
       }
       if (dict.has("maxRounds")) {
-        options.maxRounds = static_cast<int>(dict.integer("maxRounds"));
-        if (options.maxRounds < 1 || options.maxRounds > 4) refuse("maxRounds", "1..4");
+        const long rounds = dict.integer("maxRounds");
+        if (rounds < 1 || rounds > 4) refuse("maxRounds", "1..4");
+        options.maxRounds = static_cast<int>(rounds);
       }
     }
 
     const auto constant = cli.caseDir() / "constant";
     const PointSet input = readPointFile(constant / "bladePoints.dat");
     const OrderedBladePoints ordered = orderBladePoints(input);
-    std::printf("bladeFit: %zu points from %s (%s, %s)\n", ordered.points.size(),
+    std::printf("bladeFit: %zu points from %s (%s%s)\n", ordered.points.size(),
                 input.file.c_str(), ordered.reversed ? "clockwise, reversed" : "counter-clockwise",
-                ordered.closed ? "closed loop" : "open loop");
+                ordered.closed ? "; the repeated closing point dropped" : "");
 
     const BladeFitResult fit = fitBlade(ordered.points, options);
     const BladeParameters& p = fit.parameters;
@@ -79,7 +84,8 @@ int main(int argc, char* argv[]) {
     report.points = static_cast<int>(ordered.points.size());
     report.meanDeviation = fit.meanDeviation;
     report.maxDeviation = fit.maxDeviation;
-    report.maxDeviationLine = input.lines[ordered.inputIndex[fit.maxDeviationPoint]];
+    report.maxDeviationLine =
+        fit.maxDeviationPoint >= 0 ? input.lines[ordered.inputIndex[fit.maxDeviationPoint]] : 0;
     report.iterations = fit.iterations;
     report.starts = fit.starts;
     report.seconds = fit.seconds;
@@ -90,8 +96,8 @@ int main(int argc, char* argv[]) {
     const std::string profile = formatPointFile(
         loop, {"passageMesh bladeFit: fitted blade profile, closed loop (last point = first)",
                "counter-clockwise from the leading edge along the lower side; metres", "x y"});
-    writeFileAtomically(constant / "bladeProfile.dat", profile);
-    writeBladeParametersFile(constant / "bladeParameters.xml", p, report);
+    writeFilesAtomically({{constant / "bladeProfile.dat", profile},
+                          {constant / "bladeParameters.xml", bladeParametersXml(p, report)}});
     std::printf("  wrote constant/bladeParameters.xml, constant/bladeProfile.dat\n");
     return 0;
   });

@@ -319,8 +319,8 @@ BladeFitResult fitBlade(const std::vector<Eigen::Vector2d>& points,
 
   // Polish the winner on all points with a higher power of the distances, which trades a
   // little of the mean deviation for a lower maximum.
-  if (options.finalPower > 2) {
-    const double rms = std::sqrt(2 * best.cost / static_cast<double>(refineSample.size()));
+  const double rms = std::sqrt(2 * best.cost / static_cast<double>(refineSample.size()));
+  if (options.finalPower > 2 && std::isfinite(rms) && rms > 0) {
     Candidate c = solveStart(points, best.parameters, options.maxIterations, result.iterations,
                              options.finalPower, rms / best.parameters.chord);
     c.valid = checkBladeValidity(BladeShape(c.parameters)).valid;

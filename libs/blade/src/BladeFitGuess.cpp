@@ -145,15 +145,28 @@ void thicknessAlongCamberNormals(const std::vector<Eigen::Vector2d>& points, Bla
 BladeParameters guessBladeParameters(const std::vector<Eigen::Vector2d>& points) {
   const int n = static_cast<int>(points.size());
   // First edges: the two points furthest apart; the leading edge is upstream (smaller x).
+  // On a subsample of at most ~1000 points (the search is quadratic), then each end
+  // refined among its neighbours in the full loop.
+  const int stride = std::max(1, n / 1000);
   int le = 0, te = 1;
   double best = -1;
-  for (int i = 0; i < n; ++i)
-    for (int j = i + 1; j < n; ++j) {
+  for (int i = 0; i < n; i += stride)
+    for (int j = i + stride; j < n; j += stride) {
       const double d = (points[i] - points[j]).squaredNorm();
       if (d > best) {
         best = d;
         le = i;
         te = j;
+      }
+    }
+  for (int pass = 0; stride > 1 && pass < 3; ++pass)
+    for (int* end : {&le, &te}) {
+      const int other = end == &le ? te : le;
+      const int centre = *end;
+      for (int k = centre - 2 * stride; k <= centre + 2 * stride; ++k) {
+        const int i = ((k % n) + n) % n;
+        if ((points[i] - points[other]).squaredNorm() > (points[*end] - points[other]).squaredNorm())
+          *end = i;
       }
     }
   if (points[le].x() > points[te].x()) std::swap(le, te);

@@ -1,6 +1,7 @@
 #include "passageMesh/blade/BladeParametersFile.hpp"
 
 #include "passageMesh/blade/BladeShape.hpp"
+#include "passageMesh/blade/BladeValidity.hpp"
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/Dictionary.hpp"
 #include "passageMesh/core/InputError.hpp"
@@ -20,6 +21,11 @@ std::string pair(const Eigen::Vector2d& p) { return formatExact(p.x()) + " " + f
 
 void writeBladeParametersFile(const std::filesystem::path& file, const BladeParameters& p,
                               const std::optional<BladeFitReport>& report) {
+  writeFileAtomically(file, bladeParametersXml(p, report));
+}
+
+std::string bladeParametersXml(const BladeParameters& p,
+                               const std::optional<BladeFitReport>& report) {
   Dictionary dict("bladeParameters");
   dict.setComment(
       "passageMesh blade shape parameters. Lengths in metres, angles in degrees from +x "
@@ -50,7 +56,7 @@ void writeBladeParametersFile(const std::filesystem::path& file, const BladePara
     r.set("starts", std::to_string(report->starts));
     r.set("seconds", report->seconds);
   }
-  dict.write(file);
+  return dict.toXml();
 }
 
 BladeParameters readBladeParametersFile(const std::filesystem::path& file) {
@@ -64,7 +70,10 @@ BladeParameters readBladeParametersFile(const std::filesystem::path& file) {
   std::array<double, BladeParameters::size> v;
   for (int k = 0; k < BladeParameters::size; ++k) v[k] = shape.scalar(names[k]);
   const BladeParameters p = BladeParameters::fromArray(v);
-  if (p.chord <= 0) throw InputError(file.string(), shape.line("chord"), "<chord> must be positive");
+  const BladeValidity validity = checkBladeValidity(BladeShape(p));
+  if (!validity)
+    throw InputError(file.string(), shape.line("xLe"),
+                     "<shape> is not a valid blade: " + validity.reason);
   return p;
 }
 

@@ -1,6 +1,7 @@
 #include "passageMesh/blade/BladePoints.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 
@@ -50,13 +51,16 @@ OrderedBladePoints orderBladePoints(const PointSet& input) {
                          std::to_string(lineOf(second)) +
                          "); expected points in order along the profile");
 
-  double area2 = 0;
+  // Shoelace about the first point: far from the origin the absolute form cancels.
+  double area2 = 0, extent = 0;
+  const Eigen::Vector2d origin = out.points[0];
   for (int k = 0; k < n; ++k) {
-    const auto& a = out.points[k];
-    const auto& b = out.points[(k + 1) % n];
+    const Eigen::Vector2d a = out.points[k] - origin, b = out.points[(k + 1) % n] - origin;
     area2 += a.x() * b.y() - b.x() * a.y();
+    extent = std::max(extent, a.norm());
   }
-  if (area2 == 0) throw InputError(input.file, 0, "the point loop encloses no area");
+  if (std::abs(area2) <= 1e-12 * extent * extent)
+    throw InputError(input.file, 0, "the point loop encloses no area");
   if (area2 < 0) {
     std::reverse(out.points.begin(), out.points.end());
     std::reverse(out.inputIndex.begin(), out.inputIndex.end());

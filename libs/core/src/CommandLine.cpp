@@ -22,13 +22,20 @@ po::options_description_easy_init CommandLine::addOptions() { return options_.ad
 
 bool CommandLine::parse(int argc, const char* const argv[]) {
   try {
-    const auto style = po::command_line_style::unix_style |
-                       po::command_line_style::allow_long_disguise;
-    po::store(po::command_line_parser(argc, argv).options(options_).style(style).run(),
+    // No abbreviations (-c is not -case) and no positional arguments: a stray word such
+    // as a case name without -case must not silently run on the current directory.
+    const auto style = (po::command_line_style::unix_style |
+                        po::command_line_style::allow_long_disguise) &
+                       ~po::command_line_style::allow_guessing;
+    po::store(po::command_line_parser(argc, argv)
+                  .options(options_)
+                  .positional(po::positional_options_description())
+                  .style(style)
+                  .run(),
               values_);
     po::notify(values_);
   } catch (const po::error& e) {
-    throw InputError(name_ + ": command line: " + e.what() + " (see " + name_ + " -help)");
+    throw InputError(std::string("command line: ") + e.what() + " (see " + name_ + " -help)");
   }
   if (values_.count("help")) {
     std::cout << "Usage: " << name_ << " [OPTIONS]\n" << purpose_ << "\n\n"

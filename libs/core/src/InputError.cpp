@@ -5,8 +5,8 @@ namespace passageMesh {
 namespace {
 std::string locate(const std::string& file, int line, const std::string& what) {
   std::string where = file;
-  if (line > 0) where += ":" + std::to_string(line);
-  return where + ": " + what;
+  if (line > 0) where.append(":").append(std::to_string(line));
+  return where.append(": ").append(what);
 }
 }  // namespace
 

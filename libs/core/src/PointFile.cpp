@@ -20,6 +20,7 @@ PointSet readPointFile(const std::filesystem::path& file) {
   int lineNumber = 0;
   while (std::getline(in, line)) {
     ++lineNumber;
+    if (lineNumber == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 BOM
     if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
     std::istringstream words(line);
     std::vector<std::string> fields;

@@ -22,6 +22,9 @@ struct BladeFitReport {
 
 void writeBladeParametersFile(const std::filesystem::path& file, const BladeParameters& p,
                               const std::optional<BladeFitReport>& report);
+// The file's content, for writing it together with other files (writeFilesAtomically).
+std::string bladeParametersXml(const BladeParameters& p,
+                               const std::optional<BladeFitReport>& report);
 
 // Reads the shape section; throws InputError (file, line, what) for missing, unknown or
 // non-finite entries.

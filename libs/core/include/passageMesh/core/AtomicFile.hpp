@@ -3,12 +3,20 @@
 // temporary file beside the target, which is then renamed over it (atomic on POSIX).
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace passageMesh {
 
 // Writes `content` to `file`, creating its parent directory. Throws std::runtime_error
 // naming the file when it cannot be written; the target is then left as it was.
 void writeFileAtomically(const std::filesystem::path& file, const std::string& content);
+
+// Writes several files as one step: every content goes to its temporary file first, and
+// only when all of them are written are they renamed over their targets, so a failure
+// while writing leaves every target as it was.
+void writeFilesAtomically(
+    const std::vector<std::pair<std::filesystem::path, std::string>>& files);
 
 // Formats a double with 17 significant digits, enough to read back the same value.
 std::string formatExact(double value);
