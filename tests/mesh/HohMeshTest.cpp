@@ -5,24 +5,14 @@
 #include <gtest/gtest.h>
 
 #include "../blade/BladeTestData.hpp"
+#include "../passage/PassageTestData.hpp"
 #include "passageMesh/mesh/CgnsWriter.hpp"
 #include "passageMesh/mesh/OuterLoop.hpp"
 #include "passageMesh/passage/PassageBoundary.hpp"
 
 using namespace passageMesh;
 
-namespace {
-
-PassageCondition paperCondition(double chord) {
-  PassageCondition c;
-  c.pitch = 0.85 * chord;
-  c.xIn = c.xOut = 0.5 * chord;
-  c.nO = 30000;
-  c.firstCellHeight = 1.1e-4 * chord;
-  return c;
-}
-
-}  // namespace
+using testData::paperCondition;
 
 TEST(OuterLoop, PeriodicNodesAreExactImagesAndCountsAddUp) {
   const BladeShape blade(testData::typicalTurbineBlade());

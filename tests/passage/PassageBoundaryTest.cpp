@@ -5,19 +5,13 @@
 #include <cmath>
 
 #include "../blade/BladeTestData.hpp"
+#include "PassageTestData.hpp"
 
 using namespace passageMesh;
 
 namespace {
 
-PassageCondition condition(double chord) {
-  PassageCondition c;
-  c.pitch = 0.85 * chord;
-  c.xIn = c.xOut = 0.5 * chord;
-  c.nO = 30000;
-  c.firstCellHeight = 1.1e-4 * chord;
-  return c;
-}
+PassageCondition condition(double chord) { return testData::paperCondition(chord); }
 
 MeshingParameters parameters(double chord) {
   MeshingParameters m;
