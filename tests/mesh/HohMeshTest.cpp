@@ -42,7 +42,7 @@ TEST(HohMesh, BlocksArePointMatchedAndPeriodic) {
   const BladeShape blade(testData::typicalTurbineBlade());
   const double C = blade.parameters().chord;
   const PassageCondition c = paperCondition(C);
-  const HohMesh hoh = buildHohMesh(blade, c, MeshingParameters::defaults());
+  const HohMesh hoh = buildHohMesh(blade, c, MeshingParameters::defaults(C));
   ASSERT_EQ(hoh.mesh.blocks.size(), 3u);
   const auto& o = hoh.mesh.blocks[1];
   EXPECT_EQ(o.name, "OBlock");

@@ -5,10 +5,45 @@
 
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/Dictionary.hpp"
+#include "passageMesh/core/EtcFiles.hpp"
 
 namespace passageMesh {
 
-MeshingParameters MeshingParameters::defaults() { return MeshingParameters(); }
+namespace {
+
+// Reads the keys of a meshDict into `p` (those present), lengths scaled by `chord`.
+void readEntries(const Dictionary& dict, double chord, MeshingParameters& p) {
+  const auto& names = MeshingParameters::names();
+  auto v = p.toArray();
+  for (int k = 0; k < MeshingParameters::size; ++k) {
+    if (!dict.has(names[k])) continue;
+    if (k <= 1)
+      v[k] = dict.length(names[k], chord);
+    else if (names[k] == "nT")
+      v[k] = static_cast<double>(dict.integer(names[k]));
+    else
+      v[k] = dict.scalar(names[k]);
+  }
+  p = MeshingParameters::fromArray(v);
+}
+
+std::vector<std::string> keys() {
+  const auto& names = MeshingParameters::names();
+  return {names.begin(), names.end()};
+}
+
+}  // namespace
+
+MeshingParameters MeshingParameters::defaults(double chord) {
+  static const Dictionary dict = [] {
+    Dictionary d = Dictionary::read(findEtcFile("meshDictDefaults.xml"), "meshDict", keys());
+    d.require(keys());
+    return d;
+  }();
+  MeshingParameters p;
+  readEntries(dict, chord, p);
+  return p;
+}
 
 std::array<double, MeshingParameters::size> MeshingParameters::toArray() const {
   return {yIn, yOut, alphaCamber, betaIn, betaOut, static_cast<double>(nT), gammaLe, gammaTe};
@@ -58,22 +93,10 @@ MeshingParameters clipToRange(const MeshingParameters& p, double chord,
 
 MeshingParameters readMeshDict(const std::filesystem::path& file, double chord,
                                std::vector<std::string>* warnings) {
-  MeshingParameters p = MeshingParameters::defaults();
+  MeshingParameters p = MeshingParameters::defaults(chord);
   if (!std::filesystem::exists(file)) return p;
-  const auto& names = MeshingParameters::names();
-  const Dictionary dict =
-      Dictionary::read(file, "meshDict", std::vector<std::string>(names.begin(), names.end()));
-  auto v = p.toArray();
-  for (int k = 0; k < MeshingParameters::size; ++k) {
-    if (!dict.has(names[k])) continue;
-    if (k <= 1)
-      v[k] = dict.length(names[k], chord);
-    else if (names[k] == "nT")
-      v[k] = static_cast<double>(dict.integer(names[k]));
-    else
-      v[k] = dict.scalar(names[k]);
-  }
-  return clipToRange(MeshingParameters::fromArray(v), chord, warnings, file.string());
+  readEntries(Dictionary::read(file, "meshDict", keys()), chord, p);
+  return clipToRange(p, chord, warnings, file.string());
 }
 
 void writeMeshDict(const std::filesystem::path& file, const MeshingParameters& p) {

@@ -20,10 +20,9 @@ struct MeshingParameters {
   double gammaLe = 1;       // node clustering towards the leading edge (0 = none)
   double gammaTe = 1;       // ... towards the trailing edge
 
-  // The documented defaults (yIn = yOut = 0, alphaCamber 1 (the boundary midway between
-  // the camber lines, inside the passage for any blade thinner than the pitch),
-  // betaIn = betaOut = 0.5, nT 300, gammaLe = gammaTe = 1).
-  static MeshingParameters defaults();
+  // The defaults of etc/meshDictDefaults.xml for a blade of the given chord (the member
+  // initialisers above mirror that file; a test keeps the two equal).
+  static MeshingParameters defaults(double chord);
   // In the order above; nT as a double.
   std::array<double, size> toArray() const;
   static MeshingParameters fromArray(const std::array<double, size>& v);  // nT rounded
