@@ -7,13 +7,9 @@
 namespace passageMesh {
 
 BladeProjector::BladeProjector(const BladeShape& shape, int samplesPerSide)
-    : shape_(shape), samplesPerSide_(samplesPerSide) {}
-
-void BladeProjector::buildSamples() const {
-  if (!u_.empty()) return;
-  u_ = shape_.sideParameters(samplesPerSide_);
+    : shape_(shape), u_(shape.sideParameters(samplesPerSide)) {
   for (int s = 0; s < 2; ++s)
-    for (double u : u_) samples_[s].push_back(shape_.point(static_cast<BladeSide>(s), u));
+    for (double u : u_) samples_[s].push_back(shape.point(static_cast<BladeSide>(s), u));
 }
 
 double BladeProjector::newton(BladeSide side, const Eigen::Vector2d& q, double u, double lo,
@@ -54,7 +50,6 @@ FootPoint BladeProjector::project(const Eigen::Vector2d& q) const {
   // neighbouring samples; the nearer of the two refined points is the foot point.
   // Refining both sides matters near a thin edge, where the nearest sample may lie on the
   // other side.
-  buildSamples();
   FootPoint best;
   double bestDistance = std::numeric_limits<double>::max();
   for (int s = 0; s < 2; ++s) {

@@ -4,31 +4,23 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "passageMesh/mesh/ArcLengthTable.hpp"
+
 namespace passageMesh {
 
 namespace {
 
-// Arc length of the lower periodic segment from xA (inlet interface) to x, tabulated.
-struct PeriodicArcLength {
-  std::vector<double> x, s;
-  PeriodicArcLength(const PassageBoundary& b, int samples) {
-    const double xA = b.inletInterfaceX(), xB = b.outletInterfaceX();
-    for (int k = 0; k <= samples; ++k) {
-      const double xk = xA + (xB - xA) * k / samples;
-      x.push_back(xk);
-      s.push_back(k == 0 ? 0.0
-                         : s.back() + std::hypot(xk - x[k - 1], b.lowerY(xk) - b.lowerY(x[k - 1])));
-    }
+// Arc length of the lower periodic segment from xA (inlet interface), x as the parameter.
+ArcLengthTable periodicArcLength(const PassageBoundary& b, int samples) {
+  const double xA = b.inletInterfaceX(), xB = b.outletInterfaceX();
+  std::vector<double> x(samples + 1);
+  std::vector<Eigen::Vector2d> points(samples + 1);
+  for (int k = 0; k <= samples; ++k) {
+    x[k] = xA + (xB - xA) * k / samples;
+    points[k] = Eigen::Vector2d(x[k], b.lowerY(x[k]));
   }
-  double length() const { return s.back(); }
-  double xAt(double length) const {
-    const auto it = std::lower_bound(s.begin(), s.end(), length);
-    if (it == s.begin()) return x.front();
-    if (it == s.end()) return x.back();
-    const std::size_t k = static_cast<std::size_t>(it - s.begin());
-    return x[k - 1] + (x[k] - x[k - 1]) * (length - s[k - 1]) / (s[k] - s[k - 1]);
-  }
-};
+  return ArcLengthTable(std::move(x), points);
+}
 
 // Splits `total` intervals over pieces of the given lengths (at least `minimum` each).
 std::vector<int> share(int total, const std::vector<double>& lengths, int minimum) {
@@ -53,7 +45,7 @@ OuterLoop buildOuterLoop(const PassageBoundary& boundary, int nT, int lowerSideI
   const double xA = boundary.inletInterfaceX(), xB = boundary.outletInterfaceX();
   const double pitch = boundary.pitch();
   const double yLowA = boundary.lowerY(xA), yLowB = boundary.lowerY(xB);
-  const PeriodicArcLength arc(boundary, 2000);
+  const ArcLengthTable arc = periodicArcLength(boundary, 2000);
   // Where the edges face the interfaces, kept a tenth of the pitch inside them.
   const double margin = 0.1 * pitch;
   const double yMid = std::clamp(leadingEdgeY, yLowA + margin, yLowA + pitch - margin);
@@ -90,7 +82,7 @@ OuterLoop buildOuterLoop(const PassageBoundary& boundary, int nT, int lowerSideI
     p.emplace_back(xB, yLowB + (loop.outletLower - k) * dyOut);
   std::vector<double> periodicX(loop.periodic + 1);
   for (int k = 0; k <= loop.periodic; ++k)
-    periodicX[k] = k == 0 ? xA : (k == loop.periodic ? xB : arc.xAt(arc.length() * k / loop.periodic));
+    periodicX[k] = k == 0 ? xA : (k == loop.periodic ? xB : arc.parameterAt(arc.length() * k / loop.periodic));
   for (int k = loop.periodic; k > 0; --k)  // lower periodic, xB to xA (corner at xA next)
     p.emplace_back(periodicX[k], boundary.lowerY(periodicX[k]));
   for (int k = 0; k < loop.inletLower + loop.inletUpper; ++k)  // inlet, bottom to top

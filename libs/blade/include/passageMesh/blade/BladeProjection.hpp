@@ -22,14 +22,12 @@ class BladeProjector {
   FootPoint project(const Eigen::Vector2d& q) const;
 
  private:
-  void buildSamples() const;  // on first use of project()
   double newton(BladeSide side, const Eigen::Vector2d& q, double u, double lo, double hi) const;
   FootPoint footPoint(BladeSide side, double u, const Eigen::Vector2d& q) const;
 
   const BladeShape& shape_;
-  int samplesPerSide_;
-  mutable std::vector<double> u_;
-  mutable std::vector<Eigen::Vector2d> samples_[2];
+  std::vector<double> u_;
+  std::vector<Eigen::Vector2d> samples_[2];
 };
 
 // Mean and maximum unsigned distance of `points` from the profile.

@@ -25,15 +25,4 @@ struct BladeNode {
 std::vector<BladeNode> distributeBladeNodes(const BladeShape& blade, int nT, double gammaLe,
                                             double gammaTe);
 
-// Arc length along one side, tabulated for converting between u and length.
-class SideArcLength {
- public:
-  SideArcLength(const BladeShape& blade, BladeSide side, int samples = 4000);
-  double length() const { return s_.back(); }
-  double uAt(double s) const;  // inverse of the arc length from the leading edge
-
- private:
-  std::vector<double> u_, s_;
-};
-
 }  // namespace passageMesh
