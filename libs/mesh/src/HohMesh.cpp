@@ -89,7 +89,7 @@ std::string findInvalidCell(const StructuredMesh& mesh) {
 }
 
 HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
-                     const MeshingParameters& parameters) {
+                     const MeshingParameters& parameters, const HohMeshOptions& options) {
   const int nT = parameters.nT;
   if (nT < 8) throw std::invalid_argument("buildHohMesh: nT must be at least 8");
   HohMesh result;
@@ -134,6 +134,13 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
   for (int j = 0; j < nN; ++j) {  // the seam
     o.xAt(nT, j) = o.xAt(0, j);
     o.yAt(nT, j) = o.yAt(0, j);
+  }
+  if (options.smooth && nN >= 4) {
+    result.smoothing = smoothOBlock(o, options.elliptic);
+    if (!std::isfinite(result.smoothing.residual)) {
+      result.problem = "O-block: the elliptic smoothing diverged";
+      return result;
+    }
   }
 
   // H-blocks: uniform cells, their interface nodes copied from the O-block.

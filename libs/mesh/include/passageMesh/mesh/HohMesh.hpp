@@ -9,11 +9,14 @@
 //   node repeated: i = 0 and i = nT coincide), j from the wall (0) outwards (nN nodes).
 // Both index systems are right-handed: every valid cell has positive area.
 //
-// This version places the O-block nodes algebraically: j-lines leave each wall node along
-// the wall normal and end at the facing outer-loop node (cubic Hermite curves), with the
-// nodes along each line clustered to the wall so that the first one sits exactly
-// firstCellHeight away. Elliptic smoothing follows in a later version (issue 3).
+// The O-block starts algebraic: j-lines leave each wall node along the (smoothed) wall
+// normal and end at the facing outer-loop node (cubic Hermite curves), with the nodes
+// along each line clustered to the wall so that the first one sits exactly
+// firstCellHeight away. Then smoothOBlock (EllipticSmoother.hpp) solves the elliptic grid
+// equations for rows 2 .. nN - 2; the wall row, the first row and the outer loop stay.
 #include <string>
+
+#include "passageMesh/mesh/EllipticSmoother.hpp"
 
 #include "passageMesh/blade/BladeShape.hpp"
 #include "passageMesh/mesh/StructuredMesh.hpp"
@@ -22,17 +25,23 @@
 
 namespace passageMesh {
 
-struct HohMesh {
-  StructuredMesh mesh;
-  int nN = 0;            // O-block nodes normal to the wall
-  bool valid = false;    // every cell of every block has positive area, convex corners
-  std::string problem;   // why not valid (empty when valid)
+struct HohMeshOptions {
+  bool smooth = true;          // false: the algebraic mesh only
+  EllipticOptions elliptic;
 };
 
-// Throws std::invalid_argument only for arguments no mesh can have (nT < 8, nO < 2 nT);
+struct HohMesh {
+  StructuredMesh mesh;
+  int nN = 0;                  // O-block nodes normal to the wall
+  bool valid = false;          // every cell of every block has positive area, convex corners
+  std::string problem;         // why not valid (empty when valid)
+  EllipticReport smoothing;    // sweeps, final residual, converged (sweeps 0: not smoothed)
+};
+
+// Throws std::invalid_argument only for arguments no mesh can have (nT < 8);
 // a geometry that gives a folded or degenerate mesh returns valid = false with the reason.
 HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
-                     const MeshingParameters& parameters);
+                     const MeshingParameters& parameters, const HohMeshOptions& options = {});
 
 // The first cell (block, i, j) with non-positive area or a non-convex corner, as text;
 // empty when there is none.

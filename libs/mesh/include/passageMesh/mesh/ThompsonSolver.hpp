@@ -1,39 +1,67 @@
 #pragma once
-// Thompson's Poisson grid equations on an O-block (method.md section 4),
-//   alpha x_xixi - 2 beta x_xieta + gamma x_etaeta = -J^2 (P x_xi + Q x_eta)
+// Thompson's elliptic grid equations on an O-block (method.md section 4), written in the
+// Thomas-Middlecoff form
+//   alpha (x_xixi + phi x_xi) - 2 beta x_xieta + gamma (x_etaeta + psi x_eta) = 0
 //   (the same for y), alpha = x_eta^2 + y_eta^2, beta = x_xi x_eta + y_xi y_eta,
-//   gamma = x_xi^2 + y_xi^2, J = x_xi y_eta - x_eta y_xi,
-// discretised with central differences (unit index spacing) and solved by j-line
-// Gauss-Seidel: for each i, the nodes of its j-line are updated together by a tridiagonal
-// solve with the coefficients frozen at the current grid. i is periodic (the seam node
-// i = ni - 1 repeats i = 0); the first `fixedRows` rows from the wall and the outer row
-// keep their positions.
+//   gamma = x_xi^2 + y_xi^2, J = x_xi y_eta - x_eta y_xi.
+// It is method.md's Poisson system with P = alpha phi / J^2 and Q = gamma psi / J^2: the
+// same equations, but phi and psi are dimensionless (psi = -s_etaeta / s_eta along a
+// straight line whose nodes sit at arc lengths s), so they can be blended between the wall
+// and the outer boundary without carrying the 1/dn1^2 scale of the wall layer into the
+// far field (docs/elliptic-smoothing.md).
 //
-// This is the solver core. The control functions that keep the wall spacing and
-// orthogonality (Hsu-Lee) and the multigrid acceleration are issue 3's remaining work.
+// Central differences with unit index spacing; i is periodic (the seam node i = ni - 1
+// repeats i = 0); rows j < fixedRows and the outer row stay where they are. A sweep is one
+// pass of j-line Gauss-Seidel (tridiagonal solves along each i = const line) followed by
+// one pass of i-line Gauss-Seidel (cyclic tridiagonal solves around each j = const loop),
+// the coefficients frozen at the current grid: the i-lines carry the slow mode around the
+// blade that j-lines alone barely damp (method.md, "Measured on this machine kind").
+#include <functional>
 #include <vector>
 
 #include "passageMesh/mesh/StructuredMesh.hpp"
 
 namespace passageMesh {
 
+// Control functions at the nodes, index i + (ni - 1) j for i < ni - 1; empty means zero.
+struct GridControl {
+  std::vector<double> phi, psi;
+};
+
 struct ThompsonOptions {
-  int maxSweeps = 10000;
-  // Converged when the largest node move of a sweep is below tolerance * referenceLength.
-  double tolerance = 1e-10;
-  double relaxation = 1.0;
+  int maxSweeps = 5000;
+  // Converged when residual() is at most this (see ThompsonReport::residual).
+  double tolerance = 1e-9;
   int fixedRows = 1;  // rows j < fixedRows are not moved (1: the wall only)
+  bool iLines = true; // alternate j-line and i-line sweeps (false: j-lines only)
+  // Each line solve moves its nodes this multiple of the way to the line's solution
+  // (successive line over-relaxation; above about 1.5 the cold start diverges).
+  double relaxation = 1.0;
+  // The residual is measured from this row outwards (-1: from fixedRows). A fixed row whose
+  // control functions are being solved for (EllipticSmoother's row 1) belongs in it.
+  int residualFirstRow = -1;
 };
 
 struct ThompsonReport {
   int sweeps = 0;
-  double lastMove = 0;  // largest node move of the last sweep / referenceLength
+  // Largest over the moving nodes of |residual of the two equations| / (2 (alpha + gamma)),
+  // the distance a point-Jacobi update would move the node, divided by sqrt(|J|), the
+  // local cell size: dimensionless, the same for a scaled grid.
+  double residual = 0;
   bool converged = false;
 };
 
-// `P`, `Q`: control functions at the nodes i + (ni - 1) j (i < ni - 1), or empty for zero.
-ThompsonReport solveThompson(StructuredBlock& oBlock, const std::vector<double>& P,
-                             const std::vector<double>& Q, double referenceLength,
-                             const ThompsonOptions& options = {});
+// Called before every sweep with the current grid; may update the control functions (the
+// wall-layer values of EllipticSmoother) or leave them.
+using ControlUpdate = std::function<void(const StructuredBlock&, GridControl&)>;
+
+ThompsonReport solveThompson(StructuredBlock& oBlock, GridControl& control,
+                             const ThompsonOptions& options = {},
+                             const ControlUpdate& update = {});
+
+// The residual measure of ThompsonReport for the grid as it is.
+// from row `firstRow` to nj - 2.
+double thompsonResidual(const StructuredBlock& oBlock, const GridControl& control,
+                        int firstRow);
 
 }  // namespace passageMesh

@@ -17,8 +17,8 @@ struct MeshingParameters {
   double betaIn = 0.5;      // O/H interface position as a fraction of xIn
   double betaOut = 0.5;     // ... of xOut
   int nT = 300;             // O-block nodes around the blade
-  double gammaLe = 1;       // node clustering towards the leading edge (0 = none)
-  double gammaTe = 1;       // ... towards the trailing edge
+  double gammaLe = 3;       // node clustering towards the leading edge (0 = none)
+  double gammaTe = 3;       // ... towards the trailing edge
 
   // The defaults of etc/meshDictDefaults.xml for a blade of the given chord (the member
   // initialisers above mirror that file; a test keeps the two equal).
