@@ -161,10 +161,14 @@ int runCmaEs(EvaluationLog& log) {
   int starts = 0;
   while (!log.finished()) {
     Eigen::VectorXd mean(n);
-    if (starts == 0)
+    if (starts == 0) {
+      // The start itself first, as the NLopt methods do: the result is never worse than
+      // the case's own parameters.
       mean = problem.toUnit(log.options().start.value_or(problem.centre()));
-    else
+      if (log.evaluate({mean}).empty()) break;
+    } else {
       for (int k = 0; k < n; ++k) mean[k] = uniform01(normal.engine());
+    }
     CmaEsStart(n, populationSize, mean).run(log, normal);
     ++starts;
     populationSize *= 2;  // IPOP: a larger population sees more of a multimodal landscape
