@@ -19,6 +19,19 @@ OptimizationResult shortRun(const SyntheticProblem& problem) {
   return optimize(problem.box, evaluateInParallel(problem.objective, 1), options);
 }
 
+// `plot` must throw a std::runtime_error whose message is one line containing `expected`.
+template <typename Plot>
+void expectOneLineError(const Plot& plot, const std::string& expected) {
+  try {
+    plot();
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(expected), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+}
+
 }  // namespace
 
 TEST(HistoryFiles, CsvHasOneRowPerEvaluationThatReadsBackExactly) {
@@ -63,26 +76,13 @@ TEST(HistoryFiles, ConvergencePlotIsAPng) {
 
 TEST(HistoryFiles, PlotWithoutGnuplotIsAOneLineError) {
   const auto folder = testData::tempFolder("optimize");
-  try {
-    plotConvergence(folder / "any.csv", folder / "none.png", "noSuchGnuplotProgram");
-    FAIL() << "no error";
-  } catch (const std::runtime_error& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("noSuchGnuplotProgram is not installed"), std::string::npos) << what;
-    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
-  }
+  expectOneLineError([&] { plotConvergence(folder / "any.csv", folder / "none.png", "noSuchGnuplotProgram"); },
+                     "noSuchGnuplotProgram is not installed");
   EXPECT_FALSE(std::filesystem::exists(folder / "none.png"));
 }
 
 TEST(HistoryFiles, FailingGnuplotIsAOneLineErrorNamingTheCause) {
   const auto folder = testData::tempFolder("optimize");
-  try {
-    plotConvergence(folder / "missing.csv", folder / "failed.png");
-    FAIL() << "no error";
-  } catch (const std::runtime_error& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("gnuplot failed"), std::string::npos) << what;
-    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
-  }
+  expectOneLineError([&] { plotConvergence(folder / "missing.csv", folder / "failed.png"); }, "gnuplot failed");
   EXPECT_FALSE(std::filesystem::exists(folder / "failed.png"));
 }
