@@ -17,6 +17,7 @@ struct MethodBudget {
   std::string method;
   long budget;
 };
+void PrintTo(const MethodBudget& m, std::ostream* os) { *os << m.method << " (budget " << m.budget << ")"; }
 const MethodBudget methodBudgets[] = {{"cmaes", 3000}, {"bobyqa", 3000}, {"sbplx", 5000},
                                       {"cobyla", 3000}, {"crs2lm", 12000}, {"isres", 40000}};
 
