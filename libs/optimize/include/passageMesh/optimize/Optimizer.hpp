@@ -1,0 +1,70 @@
+#pragma once
+// Maximising an objective over a box in as few evaluations as possible (issue 5,
+// iterOptimize). Methods, by name (docs/optimization.md):
+//   cmaes    CMA-ES with IPOP restarts (our own, on Eigen); evaluates a whole population
+//            per batch, the natural parallel method: the default
+//   bobyqa, sbplx, cobyla    NLopt's local methods, restarted from random points
+//   crs2lm, isres            NLopt's global methods, restarted likewise
+// A run is deterministic for a seed: the same options give the same history whatever the
+// number of threads.
+#include <Eigen/Core>
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "passageMesh/optimize/BoxProblem.hpp"
+#include "passageMesh/optimize/Objective.hpp"
+#include "passageMesh/optimize/OptimizationHistory.hpp"
+
+namespace passageMesh {
+
+struct OptimizationProgress {
+  long evaluations = 0;  // done so far
+  long budget = 0;
+  double bestValue = 0;
+};
+
+struct OptimizerOptions {
+  std::string method = "cmaes";
+  long budget = 1000;         // evaluations; a run uses exactly this many unless stopped
+  std::uint64_t seed = 1;
+  // Threads for NLopt restarts run side by side (0 = all cores). CMA-ES hands its
+  // population to the objective in one batch: evaluateInParallel decides its threads.
+  int threads = 0;
+  // Set (for example by a SIGINT handler) to end the run at the next evaluation or batch;
+  // the result then holds the history so far.
+  const std::atomic<bool>* stop = nullptr;
+  // Called after every batch (CMA-ES) or evaluation (NLopt), from one thread at a time.
+  std::function<void(const OptimizationProgress&)> progress;
+  // Where the first start is (the case's meshDict); empty = the box centre. Later
+  // restarts start from random points.
+  std::optional<Eigen::VectorXd> start;
+  // NLopt: restarts run side by side in rounds of this many, each with an equal share of
+  // the budget left (local methods usually converge sooner and leave the rest to the next
+  // round). The history depends on this number, not on `threads`; 1 = one restart at a
+  // time, each with all the budget left.
+  int restartsPerRound = 1;
+};
+
+struct OptimizationResult {
+  std::string method;
+  Eigen::VectorXd best;      // as evaluated (integer dimensions rounded)
+  double bestValue = 0;
+  long evaluations = 0;
+  int restarts = 0;          // starts of the method, the first included
+  bool stopped = false;      // ended by the stop flag before the budget was used
+  OptimizationHistory history;
+};
+
+// The selectable method names, the default first.
+const std::vector<std::string>& optimizerMethods();
+
+// Throws std::invalid_argument for an unknown method, a bad box, budget < 1 or a start
+// point outside the box; exceptions from the objective pass through.
+OptimizationResult optimize(const BoxProblem& problem, const BatchObjective& objective,
+                            const OptimizerOptions& options);
+
+}  // namespace passageMesh

@@ -1,0 +1,179 @@
+// CMA-ES with IPOP restarts, after N. Hansen, "The CMA Evolution Strategy: A Tutorial"
+// (arXiv:1604.00772), and Auger & Hansen 2005 for the restarts with doubling population.
+// It minimises -f in the unit cube. Bounds by a transformation: a sampled point is
+// mirrored back into [0, 1] in every coordinate (periodic reflection), so every sample is
+// feasible and the distribution near a bound stays close to the sampled Gaussian, where a
+// clip would pile samples on the bound. Integer dimensions are rounded by the log, at
+// evaluation only: the strategy itself stays continuous.
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+#include "Methods.hpp"
+#include "passageMesh/blade/BladeSampler.hpp"  // uniform01
+
+namespace passageMesh::optimizeDetail {
+
+namespace {
+
+// Standard normal variates by the Box-Muller transform of uniform01: the same numbers on
+// every platform (std::normal_distribution's algorithm is left to the implementation).
+class StandardNormal {
+ public:
+  explicit StandardNormal(std::uint64_t seed) : rng_(seed) {}
+  double operator()() {
+    if (hasSpare_) {
+      hasSpare_ = false;
+      return spare_;
+    }
+    const double radius = std::sqrt(-2 * std::log(1 - uniform01(rng_)));  // 1 - u > 0
+    const double angle = 2 * M_PI * uniform01(rng_);
+    spare_ = radius * std::sin(angle);
+    hasSpare_ = true;
+    return radius * std::cos(angle);
+  }
+  std::mt19937_64& engine() { return rng_; }
+
+ private:
+  std::mt19937_64 rng_;
+  double spare_ = 0;
+  bool hasSpare_ = false;
+};
+
+double mirrorIntoUnit(double u) {
+  const double t = u - 2 * std::floor(u / 2);  // in [0, 2)
+  return t <= 1 ? t : 2 - t;
+}
+
+// The strategy parameters for a population size (tutorial, table 1).
+struct StrategyParameters {
+  int lambda, mu;
+  Eigen::VectorXd weights;
+  double mueff, cc, cs, c1, cmu, damps, chiN;
+
+  StrategyParameters(int n, int populationSize) : lambda(populationSize), mu(populationSize / 2) {
+    weights.resize(mu);
+    for (int i = 0; i < mu; ++i) weights[i] = std::log((lambda + 1) / 2.0) - std::log(i + 1.0);
+    weights /= weights.sum();
+    mueff = 1 / weights.squaredNorm();
+    cc = (4 + mueff / n) / (n + 4 + 2 * mueff / n);
+    cs = (mueff + 2) / (n + mueff + 5);
+    c1 = 2 / ((n + 1.3) * (n + 1.3) + mueff);
+    cmu = std::min(1 - c1, 2 * (mueff - 2 + 1 / mueff) / ((n + 2) * (n + 2) + mueff));
+    damps = 1 + 2 * std::max(0.0, std::sqrt((mueff - 1) / (n + 1)) - 1) + cs;
+    chiN = std::sqrt(n) * (1 - 1.0 / (4 * n) + 1.0 / (21.0 * n * n));
+  }
+};
+
+// Why a start ends (tutorial, appendix B.3), in unit-cube lengths.
+constexpr double tolX = 1e-7;       // every standard deviation below this
+constexpr double tolFun = 1e-9;     // recent best values and the generation all this close
+                                   // (Q differences this small are meaningless)
+constexpr double maxCondition = 1e14;
+constexpr double initialSigma = 0.3;  // a third of the box: the whole box is in reach
+
+// One start: a search distribution, run until it converges, stagnates or the log ends.
+class CmaEsStart {
+ public:
+  CmaEsStart(int n, int populationSize, Eigen::VectorXd mean)
+      : n_(n), p_(n, populationSize), mean_(std::move(mean)), sigma_(initialSigma),
+        C_(Eigen::MatrixXd::Identity(n, n)), B_(C_), D_(Eigen::VectorXd::Ones(n)),
+        pc_(Eigen::VectorXd::Zero(n)), ps_(Eigen::VectorXd::Zero(n)) {}
+
+  void run(EvaluationLog& log, StandardNormal& normal) {
+    const int historyLength = 10 + static_cast<int>(std::ceil(30.0 * n_ / p_.lambda));
+    std::vector<double> recentBest;
+    for (int generation = 0; !log.finished(); ++generation) {
+      Eigen::MatrixXd y(n_, p_.lambda);  // the steps B D z, one per column
+      std::vector<Eigen::VectorXd> unitPoints(p_.lambda);
+      for (int k = 0; k < p_.lambda; ++k) {
+        Eigen::VectorXd z(n_);
+        for (int i = 0; i < n_; ++i) z[i] = normal();
+        y.col(k) = B_ * D_.asDiagonal() * z;
+        unitPoints[k] = (mean_ + sigma_ * y.col(k)).unaryExpr(&mirrorIntoUnit);
+      }
+      const std::vector<double> values = log.evaluate(unitPoints);
+      if (static_cast<int>(values.size()) < p_.lambda) return;  // budget used or stopped
+
+      std::vector<int> order(p_.lambda);
+      std::iota(order.begin(), order.end(), 0);
+      std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return values[a] > values[b]; });
+      update(y, order, generation);
+
+      recentBest.push_back(values[order[0]]);
+      if (converged(recentBest, historyLength, values[order[0]] - values[order.back()])) return;
+    }
+  }
+
+ private:
+  void update(const Eigen::MatrixXd& y, const std::vector<int>& order, int generation) {
+    Eigen::VectorXd yMean = Eigen::VectorXd::Zero(n_);
+    for (int i = 0; i < p_.mu; ++i) yMean += p_.weights[i] * y.col(order[i]);
+    mean_ += sigma_ * yMean;
+
+    // C^(-1/2) yMean = B D^-1 B^T yMean
+    const Eigen::VectorXd whitened = B_ * (B_.transpose() * yMean).cwiseQuotient(D_);
+    ps_ = (1 - p_.cs) * ps_ + std::sqrt(p_.cs * (2 - p_.cs) * p_.mueff) * whitened;
+    const double psNorm = ps_.norm();
+    const bool hsig = psNorm / std::sqrt(1 - std::pow(1 - p_.cs, 2.0 * (generation + 1))) / p_.chiN <
+                      1.4 + 2.0 / (n_ + 1);
+    pc_ = (1 - p_.cc) * pc_ + (hsig ? std::sqrt(p_.cc * (2 - p_.cc) * p_.mueff) : 0.0) * yMean;
+
+    Eigen::MatrixXd rankMu = Eigen::MatrixXd::Zero(n_, n_);
+    for (int i = 0; i < p_.mu; ++i) rankMu += p_.weights[i] * y.col(order[i]) * y.col(order[i]).transpose();
+    const double lostVariance = hsig ? 0.0 : p_.cc * (2 - p_.cc);
+    C_ = (1 - p_.c1 - p_.cmu) * C_ + p_.c1 * (pc_ * pc_.transpose() + lostVariance * C_) + p_.cmu * rankMu;
+    sigma_ *= std::exp(p_.cs / p_.damps * (psNorm / p_.chiN - 1));
+
+    C_ = C_.selfadjointView<Eigen::Upper>();  // keep it exactly symmetric
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(C_);
+    B_ = eigen.eigenvectors();
+    D_ = eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  }
+
+  bool converged(const std::vector<double>& recentBest, int historyLength, double generationRange) const {
+    if (sigma_ * C_.diagonal().cwiseSqrt().maxCoeff() < tolX) return true;
+    if (D_.minCoeff() <= 0 || (D_.maxCoeff() / D_.minCoeff()) * (D_.maxCoeff() / D_.minCoeff()) > maxCondition)
+      return true;
+    if (static_cast<int>(recentBest.size()) < historyLength) return false;
+    const auto [low, high] = std::minmax_element(recentBest.end() - historyLength, recentBest.end());
+    return *high - *low < tolFun && generationRange < tolFun;
+  }
+
+  int n_;
+  StrategyParameters p_;
+  Eigen::VectorXd mean_;
+  double sigma_;
+  Eigen::MatrixXd C_, B_;
+  Eigen::VectorXd D_;
+  Eigen::VectorXd pc_, ps_;
+};
+
+}  // namespace
+
+int runCmaEs(EvaluationLog& log) {
+  const BoxProblem& problem = log.problem();
+  const int n = problem.dimension();
+  StandardNormal normal(derivedSeed(log.options().seed, 0));
+  int populationSize = 4 + static_cast<int>(std::floor(3 * std::log(n)));
+  int starts = 0;
+  while (!log.finished()) {
+    Eigen::VectorXd mean(n);
+    if (starts == 0) {
+      // The start itself first, as the NLopt methods do: the result is never worse than
+      // the case's own parameters.
+      mean = problem.toUnit(log.options().start.value_or(problem.centre()));
+      if (log.evaluate({mean}).empty()) break;
+    } else {
+      for (int k = 0; k < n; ++k) mean[k] = uniform01(normal.engine());
+    }
+    CmaEsStart(n, populationSize, mean).run(log, normal);
+    ++starts;
+    populationSize *= 2;  // IPOP: a larger population sees more of a multimodal landscape
+  }
+  return starts;
+}
+
+}  // namespace passageMesh::optimizeDetail

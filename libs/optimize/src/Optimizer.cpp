@@ -1,0 +1,42 @@
+#include "passageMesh/optimize/Optimizer.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "Methods.hpp"
+
+namespace passageMesh {
+
+const std::vector<std::string>& optimizerMethods() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all{"cmaes"};
+    const auto& nlopt = optimizeDetail::nloptMethodNames();
+    all.insert(all.end(), nlopt.begin(), nlopt.end());
+    return all;
+  }();
+  return names;
+}
+
+OptimizationResult optimize(const BoxProblem& problem, const BatchObjective& objective,
+                            const OptimizerOptions& options) {
+  problem.check();
+  const auto& methods = optimizerMethods();
+  if (std::find(methods.begin(), methods.end(), options.method) == methods.end()) {
+    std::string known;
+    for (const auto& m : methods) known += (known.empty() ? "" : ", ") + m;
+    throw std::invalid_argument("optimize: unknown method '" + options.method + "' (known: " + known + ")");
+  }
+  if (options.budget < 1) throw std::invalid_argument("optimize: the budget must be at least 1 evaluation");
+  if (options.start) {
+    const Eigen::VectorXd& s = *options.start;
+    if (s.size() != problem.dimension() || (s.array() < problem.lower.array()).any() ||
+        (s.array() > problem.upper.array()).any())
+      throw std::invalid_argument("optimize: the start point is not in the box");
+  }
+  optimizeDetail::EvaluationLog log(problem, objective, options);
+  const int starts = options.method == "cmaes" ? optimizeDetail::runCmaEs(log)
+                                               : optimizeDetail::runNlopt(log, options.method);
+  return log.result(options.method, starts);
+}
+
+}  // namespace passageMesh
