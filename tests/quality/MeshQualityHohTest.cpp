@@ -7,6 +7,9 @@
 #include <set>
 
 #include "QualityTestData.hpp"
+#include "../TestFiles.hpp"
+#include "passageMesh/mesh/CgnsReader.hpp"
+#include "passageMesh/mesh/CgnsWriter.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
 
 using namespace passageMesh;
@@ -88,6 +91,17 @@ TEST_F(HohQuality, ValuesAreInRangeAndTheWorkspaceGivesTheSame) {
     EXPECT_EQ(again.worstQS.i, base.worstQS.i);
     EXPECT_EQ(again.worstQS.j, base.worstQS.j);
   }
+}
+
+TEST_F(HohQuality, SameAfterACgnsRoundTrip) {
+  const auto file = tempFolder("meshQuality") / "passage.cgns";
+  writeCgns(hoh.mesh, file);
+  const MeshQuality q = computeMeshQuality(readCgns(file));
+  ASSERT_TRUE(q.valid) << q.problem;
+  EXPECT_NEAR(q.Q, base.Q, 1e-12);
+  EXPECT_NEAR(q.QJmin, base.QJmin, 1e-12);
+  EXPECT_EQ(q.worstQJ.i, base.worstQJ.i);
+  EXPECT_EQ(q.worstQJ.j, base.worstQJ.j);
 }
 
 TEST_F(HohQuality, InvariantUnderTranslationRotationAndScaling) {
