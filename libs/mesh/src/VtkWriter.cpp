@@ -122,7 +122,15 @@ std::string vtsContent(const StructuredMesh& mesh, std::size_t blockIndex,
 
 void writeVtm(const StructuredMesh& mesh, const std::filesystem::path& vtmFile,
               const std::vector<BlockField>& cellFields) {
+  for (const auto& [file, content] : vtmFileContents(mesh, vtmFile, cellFields))
+    writeFileAtomically(file, content);
+}
+
+std::vector<std::pair<std::filesystem::path, std::string>> vtmFileContents(
+    const StructuredMesh& mesh, const std::filesystem::path& vtmFile,
+    const std::vector<BlockField>& cellFields) {
   validate(mesh, cellFields);
+  std::vector<std::pair<std::filesystem::path, std::string>> files;
   const std::filesystem::path folderName = vtmFile.stem();
   const std::filesystem::path folder = vtmFile.parent_path() / folderName;
   std::string vtm;
@@ -131,14 +139,15 @@ void writeVtm(const StructuredMesh& mesh, const std::filesystem::path& vtmFile,
   vtm += "  <vtkMultiBlockDataSet>\n";
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
     const std::string fileName = mesh.blocks[b].name + ".vts";
-    writeFileAtomically(folder / fileName, vtsContent(mesh, b, cellFields));
+    files.emplace_back(folder / fileName, vtsContent(mesh, b, cellFields));
     vtm += "    <DataSet index=\"" + std::to_string(b) + "\" name=\"" +
            xmlEscaped(mesh.blocks[b].name) + "\" file=\"" +
            xmlEscaped((folderName / fileName).generic_string()) + "\"/>\n";
   }
   vtm += "  </vtkMultiBlockDataSet>\n";
   vtm += "</VTKFile>\n";
-  writeFileAtomically(vtmFile, vtm);
+  files.emplace_back(vtmFile, vtm);
+  return files;
 }
 
 }  // namespace passageMesh

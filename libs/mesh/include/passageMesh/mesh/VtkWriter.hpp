@@ -13,6 +13,7 @@
 // first and the .vtm last, each atomically, so a .vtm never references a missing block.
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "passageMesh/mesh/StructuredMesh.hpp"
@@ -33,5 +34,11 @@ struct BlockField {
 // written.
 void writeVtm(const StructuredMesh& mesh, const std::filesystem::path& vtmFile,
               const std::vector<BlockField>& cellFields = {});
+
+// What writeVtm writes, as (file, content) pairs with the .vtm last, for a tool that
+// writes them together with its other outputs (writeFilesAtomically). Same checks.
+std::vector<std::pair<std::filesystem::path, std::string>> vtmFileContents(
+    const StructuredMesh& mesh, const std::filesystem::path& vtmFile,
+    const std::vector<BlockField>& cellFields = {});
 
 }  // namespace passageMesh

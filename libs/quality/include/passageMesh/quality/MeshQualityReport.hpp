@@ -1,0 +1,20 @@
+#pragma once
+// What checkMeshQuality writes: postProcessing/meshQuality.xml (format in
+// docs/case-format.md) and a one-screen summary for the terminal.
+#include <string>
+
+#include "passageMesh/mesh/StructuredMesh.hpp"
+#include "passageMesh/quality/MeshQuality.hpp"
+
+namespace passageMesh {
+
+// The XML document: values with 17 significant digits, block names for cell locations.
+// `source` (e.g. "mesh/passage.cgns") is recorded as an attribute.
+std::string formatMeshQualityXml(const StructuredMesh& mesh, const MeshQuality& quality,
+                                 const std::string& source);
+
+// A few lines: Q and its four parts, validity (loudly when invalid), the worst cells, and
+// the other blocks' statistics when `quality.blocks` is filled.
+std::string formatMeshQualitySummary(const StructuredMesh& mesh, const MeshQuality& quality);
+
+}  // namespace passageMesh
