@@ -1,0 +1,28 @@
+#pragma once
+// What ellipticMesh reports about a mesh, and what the tests hold it to (issue 3): the wall
+// layer of the O-block against the requested first cell height and orthogonality, and the
+// uniformity of the H-blocks.
+#include "passageMesh/mesh/StructuredMesh.hpp"
+
+namespace passageMesh {
+
+struct WallLayerStatistics {
+  // First cell height: the distance of node (i, 1) from the wall along the wall normal
+  // (normal to the chord from wall node i - 1 to i + 1), relative to the requested one.
+  double heightWithin2Percent = 0;   // fraction of wall nodes with |h / dn1 - 1| <= 0.02
+  double heightMaxError = 0;         // largest |h / dn1 - 1|
+  int heightWorstNode = 0;           // its i
+  // Wall-line angle: between that wall chord and the first j-line segment, in degrees.
+  double angleMeanDeviation = 0;     // mean |angle - 90|
+  double angleMaxDeviation = 0;
+  int angleWorstNode = 0;
+};
+
+// `oBlock`: i around the blade with the seam repeated (ni = nT + 1), j = 0 on the wall.
+WallLayerStatistics wallLayerStatistics(const StructuredBlock& oBlock, double firstCellHeight);
+
+// Largest relative deviation of any cell edge of the block from the mean edge length in
+// its direction (0 for a perfectly uniform block).
+double blockNonUniformity(const StructuredBlock& block);
+
+}  // namespace passageMesh

@@ -1,0 +1,60 @@
+#include "passageMesh/mesh/MeshStatistics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Core>
+
+namespace passageMesh {
+
+WallLayerStatistics wallLayerStatistics(const StructuredBlock& o, double firstCellHeight) {
+  const int n = o.ni - 1;
+  WallLayerStatistics s;
+  int within = 0;
+  double angleSum = 0;
+  for (int i = 0; i < n; ++i) {
+    const int e = (i + 1) % n, w = (i + n - 1) % n;
+    const Eigen::Vector2d tangent =
+        Eigen::Vector2d(o.xAt(e, 0) - o.xAt(w, 0), o.yAt(e, 0) - o.yAt(w, 0)).normalized();
+    const Eigen::Vector2d line(o.xAt(i, 1) - o.xAt(i, 0), o.yAt(i, 1) - o.yAt(i, 0));
+    // Outward normal for i clockwise around the blade: the tangent turned by +90 degrees.
+    const Eigen::Vector2d normal(-tangent.y(), tangent.x());
+    const double error = std::abs(line.dot(normal) / firstCellHeight - 1);
+    if (error <= 0.02) ++within;
+    if (error > s.heightMaxError) {
+      s.heightMaxError = error;
+      s.heightWorstNode = i;
+    }
+    const double angle = std::acos(std::clamp(line.normalized().dot(tangent), -1.0, 1.0));
+    const double deviation = std::abs(angle * 180 / M_PI - 90);
+    angleSum += deviation;
+    if (deviation > s.angleMaxDeviation) {
+      s.angleMaxDeviation = deviation;
+      s.angleWorstNode = i;
+    }
+  }
+  s.heightWithin2Percent = static_cast<double>(within) / n;
+  s.angleMeanDeviation = angleSum / n;
+  return s;
+}
+
+double blockNonUniformity(const StructuredBlock& b) {
+  auto edge = [&](int i0, int j0, int i1, int j1) {
+    return std::hypot(b.xAt(i1, j1) - b.xAt(i0, j0), b.yAt(i1, j1) - b.yAt(i0, j0));
+  };
+  double worst = 0;
+  for (int direction = 0; direction < 2; ++direction) {
+    const int di = direction == 0 ? 1 : 0, dj = 1 - di;
+    double sum = 0;
+    int count = 0;
+    for (int j = 0; j + dj < b.nj; ++j)
+      for (int i = 0; i + di < b.ni; ++i, ++count) sum += edge(i, j, i + di, j + dj);
+    const double mean = sum / count;
+    for (int j = 0; j + dj < b.nj; ++j)
+      for (int i = 0; i + di < b.ni; ++i)
+        worst = std::max(worst, std::abs(edge(i, j, i + di, j + dj) / mean - 1));
+  }
+  return worst;
+}
+
+}  // namespace passageMesh
