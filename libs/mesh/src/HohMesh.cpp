@@ -25,8 +25,11 @@ StructuredBlock makeBlock(const std::string& name, int ni, int nj) {
 // A wall-normal line from wall node `b` (unit outward normal `n`) to outer node `o`:
 // a cubic Hermite curve leaving along n and arriving along o - b, with nodes at the
 // wall-clustered arc lengths. Writes nodes j = 0..nN-1 of column i.
+// Node j = 1 sits exactly firstCellHeight along `wallNormal` (the wall normal); the curve
+// beyond it leaves along the smoothed direction `n`.
 void fillNormalLine(StructuredBlock& block, int i, const Eigen::Vector2d& b,
-                    const Eigen::Vector2d& n, const Eigen::Vector2d& o, double firstCellHeight) {
+                    const Eigen::Vector2d& wallNormal, const Eigen::Vector2d& n,
+                    const Eigen::Vector2d& o, double firstCellHeight) {
   const double chord = (o - b).norm();
   const Eigen::Vector2d t0 = n * chord * 0.4, t1 = o - b;
   auto curve = [&](double t) {
@@ -53,7 +56,7 @@ void fillNormalLine(StructuredBlock& block, int i, const Eigen::Vector2d& b,
     } else if (j == block.nj - 1) {
       p = o;
     } else if (j == 1) {
-      p = b + firstCellHeight * n;  // the curve leaves along n: exact first cell height
+      p = b + firstCellHeight * wallNormal;  // exact first cell height, orthogonal
     } else {
       while (k < s.size() - 1 && s[k] < distances[j]) ++k;
       const double f = (distances[j] - s[k - 1]) / (s[k] - s[k - 1]);
@@ -111,9 +114,14 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
   // Line directions: the wall normals smoothed around the loop. Where the normal turns
   // fast (a small trailing-edge radius with few nodes) the raw normals cross a short way
   // out and fold the cells; smoothed ones fan out instead (method.md section 4).
-  std::vector<Eigen::Vector2d> direction(nT);
+  std::vector<Eigen::Vector2d> direction(nT), firstRowDirection(nT);
   for (int i = 0; i < nT; ++i) direction[i] = wall[i].outwardNormal;
+  // The first row (j = 1) leaves along the normal smoothed twice only: orthogonal to the
+  // wall to within a degree except at the sharpest edges, where the raw normals of SIRT's
+  // trailing edge (radius about 2 firstCellHeight) already fold the second cell.
+  constexpr int firstRowPasses = 2;
   for (int pass = 0; pass < 20; ++pass) {
+    if (pass == firstRowPasses) firstRowDirection = direction;
     std::vector<Eigen::Vector2d> next(nT);
     for (int i = 0; i < nT; ++i)
       next[i] = (direction[(i + nT - 1) % nT] + 2 * direction[i] + direction[(i + 1) % nT]).normalized();
@@ -125,7 +133,7 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
   StructuredBlock o = makeBlock("OBlock", nT + 1, nN);
   try {
     for (int i = 0; i < nT; ++i)
-      fillNormalLine(o, i, wall[i].point, direction[i], outer.nodes[i],
+      fillNormalLine(o, i, wall[i].point, firstRowDirection[i], direction[i], outer.nodes[i],
                      condition.firstCellHeight);
   } catch (const std::invalid_argument& e) {
     result.problem = std::string("O-block: ") + e.what();
