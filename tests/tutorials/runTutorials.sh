@@ -1,0 +1,23 @@
+#!/bin/bash
+# Runs every tutorial (blade points -> checked mesh) on a copy in a temporary folder and
+# requires `cgnscheck mesh/passage.cgns` to print no warning and no error (issue 3).
+#   runTutorials.sh SOURCE_DIR BUILD_DIR
+set -euo pipefail
+source="$1"
+export PASSAGEMESH_BUILD="$2"
+command -v cgnscheck > /dev/null || { echo "cgnscheck not installed (Debian: cgns-convert)"; exit 1; }
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+# Allrun sources etc/ relative to the case: copy the tree the case needs.
+mkdir -p "$work/tutorials"
+cp -r "$source/etc" "$work/"
+for blade in LS89 STD10 T106A SIRT; do
+  cp -r "$source/tutorials/$blade" "$work/tutorials/"
+  (cd "$work/tutorials/$blade" && ./Allclean > /dev/null 2>&1 || true)
+  "$work/tutorials/$blade/Allrun"
+  report="$(cgnscheck "$work/tutorials/$blade/mesh/passage.cgns" 2>&1)"
+  if grep -Eiq "warning|error" <<< "$report"; then
+    echo "$blade: cgnscheck complains:"; echo "$report"; exit 1
+  fi
+  grep -m1 "Q = " "$work/tutorials/$blade/log.checkMeshQuality" | sed "s/^/$blade: /"
+done

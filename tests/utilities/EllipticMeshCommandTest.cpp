@@ -1,0 +1,97 @@
+// ellipticMesh as a user runs it: a case gives mesh/passage.cgns (which cgnscheck accepts,
+// when it is installed) and mesh/passage.vtm; bad input gives a one-line error, a non-zero
+// exit and no mesh files.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "../blade/BladeTestData.hpp"
+#include "UtilityTestSupport.hpp"
+#include "passageMesh/blade/BladeParametersFile.hpp"
+
+using namespace passageMesh;
+using namespace passageMesh::testData;
+
+namespace {
+
+const std::string ellipticMesh = ELLIPTICMESH_EXECUTABLE;
+
+std::string passageDict(const std::string& pitch, const std::string& nO = "12000") {
+  return "<passageDict>\n<pitch>" + pitch + "</pitch>\n<xIn>0.5c</xIn>\n<xOut>0.5c</xOut>\n<nO>" +
+         nO + "</nO>\n<firstCellHeight>1.1e-4c</firstCellHeight>\n</passageDict>\n";
+}
+
+std::filesystem::path caseWith(const std::string& name, const std::string& dict,
+                               const std::string& meshDict = "") {
+  const auto dir = freshCase("ellipticMesh_" + name);
+  writeBladeParametersFile(dir / "constant" / "bladeParameters.xml", typicalTurbineBlade(), {});
+  writeText(dir / "system" / "passageDict.xml", dict);
+  if (!meshDict.empty()) writeText(dir / "system" / "meshDict.xml", meshDict);
+  return dir;
+}
+
+void expectNoMesh(const std::filesystem::path& dir) {
+  EXPECT_FALSE(std::filesystem::exists(dir / "mesh" / "passage.cgns"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "mesh" / "passage.vtm"));
+}
+
+}  // namespace
+
+TEST(EllipticMeshCommand, WritesCgnsAndVtkThatCgnscheckAccepts) {
+  const auto dir = caseWith("good", passageDict("0.85c"), "<meshDict><nT>150</nT></meshDict>");
+  const RunResult r = runTool(ellipticMesh, dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("converged"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(dir / "mesh" / "passage.cgns"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "mesh" / "passage.vtm"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "mesh" / "passage" / "OBlock.vts"));
+  if (std::system("command -v cgnscheck > /dev/null 2>&1") != 0) GTEST_SKIP() << "no cgnscheck";
+  const RunResult check = runCommand("cgnscheck", "'" + (dir / "mesh" / "passage.cgns").string() + "'", dir);
+  EXPECT_EQ(check.exitCode, 0) << check.out << check.err;
+  EXPECT_EQ(check.out.find("WARNING"), std::string::npos) << check.out;
+  EXPECT_EQ(check.out.find("ERROR"), std::string::npos) << check.out;
+}
+
+TEST(EllipticMeshCommand, RefusesBadInputAndWritesNothing) {
+  struct Bad {
+    std::string name, dict, meshDict, message;
+  };
+  const std::vector<Bad> cases = {
+      {"negativePitch", passageDict("-0.01"), "", "expected a positive length"},
+      {"fewNodes", passageDict("0.85c", "50"), "", "nO"},
+      {"brokenMeshDict", passageDict("0.85c"), "<meshDict><nT>many</nT></meshDict>", "nT"},
+  };
+  for (const auto& bad : cases) {
+    const auto dir = caseWith(bad.name, bad.dict, bad.meshDict);
+    const RunResult r = runTool(ellipticMesh, dir);
+    EXPECT_NE(r.exitCode, 0) << bad.name;
+    EXPECT_NE(r.err.find(bad.message), std::string::npos) << bad.name << ": " << r.err;
+    EXPECT_NE(r.err.find("ellipticMesh: error:"), std::string::npos) << r.err;
+    expectNoMesh(dir);
+  }
+  const auto noBlade = freshCase("ellipticMesh_noBlade");
+  writeText(noBlade / "system" / "passageDict.xml", passageDict("0.85c"));
+  const RunResult r = runTool(ellipticMesh, noBlade);
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.err.find("bladeParameters.xml: file not found"), std::string::npos) << r.err;
+  expectNoMesh(noBlade);
+}
+
+TEST(EllipticMeshCommand, ClipsOutOfRangeParametersWithAWarning) {
+  const auto dir = caseWith("clipped", passageDict("0.85c"),
+                            "<meshDict><nT>150</nT><betaIn>1.5</betaIn></meshDict>");
+  const RunResult r = runTool(ellipticMesh, dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("betaIn"), std::string::npos) << r.err;
+}
+
+TEST(EllipticMeshCommand, AFoldedMeshIsAnErrorAndWritesNothing) {
+  // No clustering at the trailing edge: the lines fold there (docs/elliptic-smoothing.md).
+  const auto dir = caseWith("folded", passageDict("0.85c"),
+                            "<meshDict><nT>150</nT><gammaLE>0</gammaLE><gammaTE>0</gammaTE></meshDict>");
+  const RunResult r = runTool(ellipticMesh, dir);
+  if (r.exitCode == 0) GTEST_SKIP() << "this blade meshes even without clustering";
+  EXPECT_NE(r.err.find("the mesh is invalid"), std::string::npos) << r.err;
+  expectNoMesh(dir);
+}
