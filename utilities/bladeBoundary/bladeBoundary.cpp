@@ -3,15 +3,13 @@
 //   reads  constant/bladeParameters.xml, system/passageDict.xml, system/meshDict.xml (optional)
 //   writes constant/passageBoundary.dat
 #include <cstdio>
-#include <iostream>
 #include <sstream>
 
-#include "passageMesh/blade/BladeParametersFile.hpp"
-#include "passageMesh/blade/BladeShape.hpp"
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/core/PointFile.hpp"
 #include "passageMesh/passage/PassageBoundary.hpp"
+#include "passageMesh/passage/PassageCase.hpp"
 
 using namespace passageMesh;
 
@@ -33,15 +31,9 @@ int main(int argc, char* argv[]) {
                     "to constant/passageBoundary.dat (gnuplot: plot it 'index 0' .. 'index 4').");
     if (!cli.parse(argc, argv)) return 0;
     const auto& dir = cli.caseDir();
-    const BladeShape blade(readBladeParametersFile(dir / "constant" / "bladeParameters.xml"));
-    const double chord = blade.parameters().chord;
-    std::vector<std::string> warnings;
-    const PassageCondition condition =
-        readPassageDict(dir / "system" / "passageDict.xml", chord, &warnings);
-    const MeshingParameters parameters =
-        readMeshDict(dir / "system" / "meshDict.xml", chord, &warnings);
-    for (const auto& w : warnings) std::cerr << "bladeBoundary: warning: " << w << "\n";
-    const PassageBoundary boundary(blade, condition, parameters);
+    const PassageCase input = readPassageCase(dir, "bladeBoundary");
+    const BladeShape& blade = input.blade;
+    const PassageBoundary boundary(blade, input.condition, input.parameters);
 
     // The lower boundary has kinks at the edges' x: sample each piece separately.
     std::vector<double> xs = spaced(boundary.inletX(), blade.leadingEdge().x(), 41);

@@ -5,15 +5,14 @@
 // An invalid (folded) mesh is an error: nothing is written.
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
 
-#include "passageMesh/blade/BladeParametersFile.hpp"
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/mesh/CgnsWriter.hpp"
 #include "passageMesh/mesh/HohMesh.hpp"
 #include "passageMesh/mesh/MeshStatistics.hpp"
 #include "passageMesh/mesh/VtkWriter.hpp"
+#include "passageMesh/passage/PassageCase.hpp"
 
 using namespace passageMesh;
 
@@ -23,17 +22,12 @@ int main(int argc, char* argv[]) {
                     "Builds the HOH mesh of the case's blade passage (H-block inlet, elliptic\n"
                     "O-block, H-block outlet) and writes mesh/passage.cgns and mesh/passage.vtm.");
     if (!cli.parse(argc, argv)) return 0;
+    const PassageCase input = readPassageCase(cli.caseDir(), "ellipticMesh");
     const auto& dir = cli.caseDir();
-    const BladeShape blade(readBladeParametersFile(dir / "constant" / "bladeParameters.xml"));
-    const double chord = blade.parameters().chord;
-    std::vector<std::string> warnings;
-    const PassageCondition condition =
-        readPassageDict(dir / "system" / "passageDict.xml", chord, &warnings);
-    const MeshingParameters parameters =
-        readMeshDict(dir / "system" / "meshDict.xml", chord, &warnings);
-    for (const auto& w : warnings) std::cerr << "ellipticMesh: warning: " << w << "\n";
+    const PassageCondition& condition = input.condition;
+    const MeshingParameters& parameters = input.parameters;
 
-    const HohMesh hoh = buildHohMesh(blade, condition, parameters);
+    const HohMesh hoh = buildHohMesh(input.blade, condition, parameters);
     const EllipticReport& s = hoh.smoothing;
     std::printf("ellipticMesh: O-block %d x %d nodes; elliptic smoothing: %d sweeps, residual "
                 "%.3e (%s)\n", parameters.nT, hoh.nN, s.sweeps, s.residual,
