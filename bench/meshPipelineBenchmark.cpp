@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
     std::sort(seconds.begin(), seconds.end());
     const MeshQuality q = computeMeshQuality(hoh.mesh);
     std::printf("| %s | %d x %d | %d | %.2e | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f%s |\n",
-                name.c_str(), parameters.nT, hoh.nN, hoh.smoothing.sweeps, hoh.smoothing.residual,
+                name.c_str(), parameters.nT, hoh.nN, hoh.smoothing.iterations, hoh.smoothing.residual,
                 seconds[seconds.size() / 2], q.QJmin, q.QJavg, q.QSmin, q.QSavg, q.Q,
                 hoh.valid ? "" : " (INVALID)");
   }

@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
     out.valid = hoh.valid;
     out.problem = hoh.problem;
     out.converged = hoh.smoothing.converged;
-    out.sweeps = hoh.smoothing.sweeps;
+    out.sweeps = hoh.smoothing.iterations;
     for (const auto& b : hoh.mesh.blocks)
       for (std::size_t n = 0; n < b.x.size(); ++n)
         if (!std::isfinite(b.x[n]) || !std::isfinite(b.y[n])) out.finite = false;

@@ -1,19 +1,24 @@
 // Thompson's equations with P = Q = 0 on the annulus between two concentric circles with
 // uniform boundary nodes: the exact grid has radii in geometric progression (eta is
-// harmonic, so linear in log r). The discrete solution must approach it at second order.
+// harmonic, so linear in log r). The discrete solution must approach it at second order,
+// and the multigrid solver must reach the same discrete solution as line relaxation.
 #include "passageMesh/mesh/ThompsonSolver.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "passageMesh/mesh/ThompsonMultigrid.hpp"
+
 using namespace passageMesh;
 
 namespace {
 
-// Largest radial error of the converged grid, relative to the outer radius.
-double annulusError(int n, int nj, ThompsonReport* report = nullptr) {
-  const double r0 = 1.0, r1 = 4.0;
+constexpr double innerRadius = 1.0, outerRadius = 4.0;
+
+// Uniform radii, clockwise i, j outwards; `wobble` displaces the inner nodes radially so
+// the start is not the answer.
+StructuredBlock annulus(int n, int nj, double wobble = 0) {
   StructuredBlock o;
   o.name = "OBlock";
   o.ni = n + 1;
@@ -22,24 +27,36 @@ double annulusError(int n, int nj, ThompsonReport* report = nullptr) {
   o.y.resize(o.x.size());
   for (int j = 0; j < nj; ++j)
     for (int i = 0; i <= n; ++i) {
-      const double theta = -2 * M_PI * (i % n) / n;            // clockwise, j outwards
-      const double r = r0 + (r1 - r0) * j / (nj - 1.0);        // start: uniform radii
+      const double theta = -2 * M_PI * (i % n) / n;
+      const double s = j / (nj - 1.0);
+      const double r = innerRadius + (outerRadius - innerRadius) * s +
+                       wobble * std::sin(7 * theta) * std::sin(M_PI * s);
       o.xAt(i, j) = r * std::cos(theta);
       o.yAt(i, j) = r * std::sin(theta);
     }
+  return o;
+}
+
+// Largest radial error against the harmonic grid, relative to the outer radius.
+double radialError(const StructuredBlock& o) {
+  double error = 0;
+  for (int j = 0; j < o.nj; ++j) {
+    const double exact = innerRadius * std::pow(outerRadius / innerRadius, j / (o.nj - 1.0));
+    for (int i = 0; i + 1 < o.ni; ++i)
+      error = std::max(error, std::abs(std::hypot(o.xAt(i, j), o.yAt(i, j)) - exact) / outerRadius);
+  }
+  return error;
+}
+
+double annulusError(int n, int nj, ThompsonReport* report = nullptr) {
+  StructuredBlock o = annulus(n, nj);
   ThompsonOptions options;
   options.tolerance = 1e-12;
   options.maxSweeps = 200000;
   GridControl none;
   const ThompsonReport r = solveThompson(o, none, options);
   if (report) *report = r;
-  double error = 0;
-  for (int j = 0; j < nj; ++j) {
-    const double exact = r0 * std::pow(r1 / r0, static_cast<double>(j) / (nj - 1));
-    for (int i = 0; i < n; ++i)
-      error = std::max(error, std::abs(std::hypot(o.xAt(i, j), o.yAt(i, j)) - exact) / r1);
-  }
-  return error;
+  return radialError(o);
 }
 
 }  // namespace
@@ -67,4 +84,39 @@ TEST(ThompsonSolver, RefusesBadSizes) {
   o.y.assign(9, 0.0);
   GridControl none;
   EXPECT_THROW(solveThompson(o, none), std::invalid_argument);
+}
+
+// Even and odd loops, rows with and without a one-row last interval, one or two fixed rows
+// at the wall and at the outer loop: multigrid reaches line relaxation's solution, in
+// few cycles.
+TEST(ThompsonMultigrid, ReachesTheLineRelaxationSolutionInFewCycles) {
+  struct Case {
+    int n, nj, below, above;
+  };
+  for (const Case& c : {Case{128, 34, 2, 1}, Case{127, 33, 2, 1}, Case{90, 40, 1, 1},
+                        Case{101, 30, 2, 2}}) {
+    MovingRows rows;
+    rows.below = c.below;
+    rows.above = c.above;
+    StructuredBlock byLines = annulus(c.n, c.nj, 0.05), byMultigrid = byLines;
+    GridControl none;
+    ThompsonOptions single;
+    single.tolerance = 1e-12;
+    single.maxSweeps = 200000;
+    single.rows = rows;
+    ASSERT_TRUE(solveThompson(byLines, none, single).converged);
+    MultigridOptions mg;
+    mg.tolerance = 1e-12;
+    mg.maxCycles = 40;
+    mg.rows = rows;
+    const MultigridReport r = solveThompsonMultigrid(byMultigrid, none, mg);
+    EXPECT_TRUE(r.converged) << c.n << " x " << c.nj << ": residual " << r.residual;
+    EXPECT_GT(r.levels, 2);
+    double largest = 0;
+    for (std::size_t k = 0; k < byLines.x.size(); ++k)
+      largest = std::max(largest, std::hypot(byLines.x[k] - byMultigrid.x[k], byLines.y[k] - byMultigrid.y[k]));
+    EXPECT_LT(largest, 1e-9) << c.n << " x " << c.nj;
+    std::printf("%d x %d, rows %d/%d: %d cycles, %d levels\n", c.n, c.nj, c.below, c.above,
+                r.cycles, r.levels);
+  }
 }

@@ -66,10 +66,10 @@ TEST_P(TutorialMesh, DefaultParametersGiveAValidSmoothMesh) {
 
   const MeshQuality q = computeMeshQuality(hoh.mesh);
   EXPECT_TRUE(q.valid) << q.problem;
-  std::printf("%s: %d sweeps, residual %.2e; first cell within 2 %% at %.1f %% (worst %.2f %% "
+  std::printf("%s: %d multigrid cycles, residual %.2e; first cell within 2 %% at %.1f %% (worst %.2f %% "
               "at i = %d); wall angle mean %.3f max %.3f deg at i = %d; Q_J %.4f %.4f Q_S %.4f "
               "%.4f Q %.4f\n",
-              name.c_str(), hoh.smoothing.sweeps, hoh.smoothing.residual,
+              name.c_str(), hoh.smoothing.iterations, hoh.smoothing.residual,
               100 * wall.heightWithin2Percent, 100 * wall.heightMaxError, wall.heightWorstNode,
               wall.angleMeanDeviation, wall.angleMaxDeviation, wall.angleWorstNode, q.QJmin,
               q.QJavg, q.QSmin, q.QSavg, q.Q);
@@ -77,4 +77,4 @@ TEST_P(TutorialMesh, DefaultParametersGiveAValidSmoothMesh) {
 
 INSTANTIATE_TEST_SUITE_P(Tutorials, TutorialMesh,
                          ::testing::Values("LS89", "STD10", "T106A", "SIRT"),
-                         [](const auto& info) { return info.param; });
+                         [](const auto& test) { return test.param; });

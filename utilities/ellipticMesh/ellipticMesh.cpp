@@ -29,8 +29,8 @@ int main(int argc, char* argv[]) {
 
     const HohMesh hoh = buildHohMesh(input.blade, condition, parameters);
     const EllipticReport& s = hoh.smoothing;
-    std::printf("ellipticMesh: O-block %d x %d nodes; elliptic smoothing: %d sweeps, residual "
-                "%.3e (%s)\n", parameters.nT, hoh.nN, s.sweeps, s.residual,
+    std::printf("ellipticMesh: O-block %d x %d nodes; elliptic smoothing: %d multigrid cycles, residual "
+                "%.3e (%s)\n", parameters.nT, hoh.nN, s.iterations, s.residual,
                 s.converged ? "converged" : "NOT converged");
     if (!hoh.valid) throw std::runtime_error("the mesh is invalid: " + hoh.problem);
 

@@ -28,6 +28,8 @@ class Grid {
   double& y(int i, int j) { return b_.yAt(i, j); }
   double phi(int i, int j) const { return control_.phi.empty() ? 0.0 : control_.phi[index(i, j)]; }
   double psi(int i, int j) const { return control_.psi.empty() ? 0.0 : control_.psi[index(i, j)]; }
+  double forceX(int i, int j) const { return control_.forceX.empty() ? 0.0 : control_.forceX[index(i, j)]; }
+  double forceY(int i, int j) const { return control_.forceY.empty() ? 0.0 : control_.forceY[index(i, j)]; }
 
   NodeTerms terms(int i, int j) const {
     const int e = east(i), w = west(i);
@@ -54,8 +56,8 @@ class Grid {
       return t.alpha * (vE - 2 * c + vW + 0.5 * p * (vE - vW)) +
              t.gamma * (vN - 2 * c + vS + 0.5 * q * (vN - vS)) + cross;
     };
-    rx = equation(b_.x, t.crossX);
-    ry = equation(b_.y, t.crossY);
+    rx = equation(b_.x, t.crossX) - forceX(i, j);
+    ry = equation(b_.y, t.crossY) - forceY(i, j);
     scale = 2 * (t.alpha + t.gamma);
     jacobian = t.jacobian;
   }
@@ -124,8 +126,9 @@ void solveCyclicTridiagonal(int m, std::vector<double>& lower, std::vector<doubl
 
 class LineSweeps {
  public:
-  LineSweeps(StructuredBlock& block, const GridControl& control, int fixedRows, double relaxation)
-      : block_(block), grid_(block, control), first_(fixedRows), last_(block.nj - 2),
+  LineSweeps(StructuredBlock& block, const GridControl& control, const MovingRows& rows,
+             double relaxation)
+      : block_(block), grid_(block, control), first_(rows.first()), last_(rows.last(block)),
         omega_(relaxation) {
     const std::size_t size = static_cast<std::size_t>(std::max(block.ni, block.nj));
     for (auto* v : {&lower_, &diagonal_, &upper_, &rx_, &ry_}) v->resize(size);
@@ -144,8 +147,8 @@ class LineSweeps {
         upper_[k] = t.gamma * (1 + 0.5 * q);
         diagonal_[k] = -2 * (t.alpha + t.gamma);
         const double aE = t.alpha * (1 + 0.5 * p), aW = t.alpha * (1 - 0.5 * p);
-        rx_[k] = -(aE * grid_.x(e, j) + aW * grid_.x(w, j) + t.crossX);
-        ry_[k] = -(aE * grid_.y(e, j) + aW * grid_.y(w, j) + t.crossY);
+        rx_[k] = grid_.forceX(i, j) - (aE * grid_.x(e, j) + aW * grid_.x(w, j) + t.crossX);
+        ry_[k] = grid_.forceY(i, j) - (aE * grid_.y(e, j) + aW * grid_.y(w, j) + t.crossY);
       }
       rx_[0] -= lower_[0] * grid_.x(i, first_ - 1);
       ry_[0] -= lower_[0] * grid_.y(i, first_ - 1);
@@ -171,8 +174,8 @@ class LineSweeps {
         upper_[i] = t.alpha * (1 + 0.5 * p);
         diagonal_[i] = -2 * (t.alpha + t.gamma);
         const double gN = t.gamma * (1 + 0.5 * q), gS = t.gamma * (1 - 0.5 * q);
-        rx_[i] = -(gN * grid_.x(i, j + 1) + gS * grid_.x(i, j - 1) + t.crossX);
-        ry_[i] = -(gN * grid_.y(i, j + 1) + gS * grid_.y(i, j - 1) + t.crossY);
+        rx_[i] = grid_.forceX(i, j) - (gN * grid_.x(i, j + 1) + gS * grid_.x(i, j - 1) + t.crossX);
+        ry_[i] = grid_.forceY(i, j) - (gN * grid_.y(i, j + 1) + gS * grid_.y(i, j - 1) + t.crossY);
       }
       solveCyclicTridiagonal(n, lower_, diagonal_, upper_, rx_, ry_, work_);
       for (int i = 0; i < n; ++i) {
@@ -199,28 +202,54 @@ class LineSweeps {
   std::vector<double> lower_, diagonal_, upper_, rx_, ry_, work_;
 };
 
-void checkSizes(const StructuredBlock& o, const GridControl& control, int fixedRows) {
+void checkSizes(const StructuredBlock& o, const GridControl& control, const MovingRows& rows) {
   const int n = o.ni - 1;
-  if (n < 3 || o.nj < 3 || fixedRows < 1 || fixedRows > o.nj - 2)
+  if (n < 3 || o.nj < 3 || rows.below < 1 || rows.above < 1 || rows.last(o) < rows.first())
     throw std::invalid_argument("solveThompson: block too small for the fixed rows");
   const std::size_t nodes = static_cast<std::size_t>(n) * o.nj;
-  if ((!control.phi.empty() && control.phi.size() != nodes) ||
-      (!control.psi.empty() && control.psi.size() != nodes))
+  auto wrongSize = [nodes](const std::vector<double>& v) { return !v.empty() && v.size() != nodes; };
+  if (wrongSize(control.phi) || wrongSize(control.psi) || wrongSize(control.forceX) ||
+      wrongSize(control.forceY))
     throw std::invalid_argument("solveThompson: control functions of the wrong size");
 }
 
 }  // namespace
 
-double thompsonResidual(const StructuredBlock& o, const GridControl& control, int firstRow) {
-  checkSizes(o, control, firstRow);
+void sweepThompson(StructuredBlock& o, const GridControl& control, const MovingRows& rows,
+                   double relaxation, bool iLines) {
+  checkSizes(o, control, rows);
+  LineSweeps sweeps(o, control, rows, relaxation);
+  sweeps.jLines();
+  if (iLines) sweeps.iLines();
+}
+
+void thompsonResidualField(const StructuredBlock& o, const GridControl& control,
+                           const MovingRows& rows, std::vector<double>& rx,
+                           std::vector<double>& ry) {
+  checkSizes(o, control, rows);
+  const Grid grid(const_cast<StructuredBlock&>(o), control);
+  const std::size_t nodes = static_cast<std::size_t>(grid.n()) * o.nj;
+  rx.resize(nodes);
+  ry.resize(nodes);
+  for (int j = rows.first(); j <= rows.last(o); ++j)
+    for (int i = 0; i < grid.n(); ++i) {
+      double scale, jacobian;
+      const std::size_t k = static_cast<std::size_t>(i + grid.n() * j);
+      grid.residual(i, j, rx[k], ry[k], scale, jacobian);
+    }
+}
+
+double thompsonResidual(const StructuredBlock& o, const GridControl& control,
+                        const MovingRows& rows) {
+  checkSizes(o, control, rows);
   // Grid takes a mutable block for the sweeps; the residual only reads it.
   const Grid grid(const_cast<StructuredBlock&>(o), control);
   double largest = 0;
-  for (int j = firstRow; j <= o.nj - 2; ++j)
+  for (int j = rows.first(); j <= rows.last(o); ++j)
     for (int i = 0; i < grid.n(); ++i) {
       double rx, ry, scale, jacobian;
       grid.residual(i, j, rx, ry, scale, jacobian);
-      const double r = std::hypot(rx, ry) / scale / std::sqrt(std::abs(jacobian));
+      const double r = std::sqrt((rx * rx + ry * ry) / std::abs(jacobian)) / scale;
       if (!(r <= largest)) largest = r;  // also catches NaN
     }
   return largest;
@@ -228,19 +257,18 @@ double thompsonResidual(const StructuredBlock& o, const GridControl& control, in
 
 ThompsonReport solveThompson(StructuredBlock& o, GridControl& control,
                              const ThompsonOptions& options, const ControlUpdate& update) {
-  checkSizes(o, control, options.fixedRows);
-  LineSweeps sweeps(o, control, options.fixedRows, options.relaxation);
+  checkSizes(o, control, options.rows);
+  LineSweeps sweeps(o, control, options.rows, options.relaxation);
   ThompsonReport report;
   for (int sweep = 1; sweep <= options.maxSweeps; ++sweep) {
     if (update) {
       update(o, control);
-      checkSizes(o, control, options.fixedRows);
+      checkSizes(o, control, options.rows);
     }
     sweeps.jLines();
     if (options.iLines) sweeps.iLines();
     report.sweeps = sweep;
-    report.residual = thompsonResidual(
-        o, control, options.residualFirstRow < 0 ? options.fixedRows : options.residualFirstRow);
+    report.residual = thompsonResidual(o, control, options.rows);
     if (!std::isfinite(report.residual)) break;
     if (report.residual <= options.tolerance) {
       report.converged = true;

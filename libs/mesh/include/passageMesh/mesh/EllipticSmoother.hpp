@@ -2,38 +2,50 @@
 // Elliptic smoothing of the O-block (method.md section 4, docs/elliptic-smoothing.md).
 //
 // Fixed: the wall row j = 0, the first row j = 1 (each node exactly firstCellHeight from
-// its wall node: the first cell height is exact by construction) and the outer row.
-// Moving: rows 2 .. nj - 2, by ThompsonSolver (Thomas-Middlecoff form) with
-//   phi(i, j) = phiWall(i) (1 - s)^3 + phiOuter(i) s^3,     s = (j - 1) / (nj - 2),
+// its wall node: the first cell height is exact by construction) and the outer loop.
+// Moving: rows 2 .. nj - 2, by ThompsonSolver's equations (Thomas-Middlecoff form) with
+//   phi(i, j) = phiWall(i) (1 - s)^3 + phiOuter(i) s^3,                 s = (j - 1) / (nj - 2)
 //   psi(i, j) = psiLine(i, j) + (psiOuter(i) - psiLine(i, nj - 2)) s^3,
 // where
 //   phiWall   = -t_xixi / t_xi of the wall node distribution (arc length t),
 //   psiLine   = -s_etaeta / s_eta of the initial (algebraic) line: it keeps the wall
 //               clustering solved for the first cell height,
 //   phiOuter, psiOuter = Sorenson's boundary control at the outer loop: the values that
-//               make the equations at the outer row hold for lines leaving it
-//               orthogonally with the initial outer spacing; updated every sweep with
-//               under-relaxation as the grid converges. Orthogonality at the outer loop is
-//               what keeps the grid unfolded at its re-entrant corners (the kink where a
-//               camber-following periodic boundary meets the straight outlet part).
+//               make the outer-row equations hold for lines leaving the loop orthogonally
+//               with the initial outer spacing. They depend on the grid they shape, so
+//               they are found by under-relaxed iteration together with the grid, on a
+//               coarse copy of the O-block (cheap, and this coupled iteration is only
+//               stable with slowly converging sweeps), then carried to the full grid.
+// Orthogonality at the outer loop is what keeps the grid unfolded at its re-entrant
+// kinks (where a camber-following periodic boundary meets the straight outlet part).
+// The full grid is then solved with the control functions fixed, by FAS multigrid
+// (ThompsonMultigrid.hpp), or by single-grid line relaxation.
 #include "passageMesh/mesh/StructuredMesh.hpp"
 #include "passageMesh/mesh/ThompsonSolver.hpp"
 
 namespace passageMesh {
 
 struct EllipticOptions {
-  int maxSweeps = 4000;
-  double tolerance = 1e-6;          // ThompsonReport::residual at convergence
-  double lineRelaxation = 1.3;      // ThompsonOptions::relaxation
-  // Each sweep moves the outer control values this fraction of the way to the values the
-  // outer-row equations ask for (0.2 already diverged on the tutorials).
-  double controlRelaxation = 0.1;
-  // |phi|, |psi| above 2 make the line systems lose diagonal dominance.
+  double tolerance = 1e-5;          // ThompsonReport::residual of the full grid
+  bool multigrid = true;            // false: single-grid line relaxation on the full grid
+  int maxCycles = 100;              // multigrid V-cycles
+  int maxSweeps = 5000;             // single-grid sweeps on the full grid
+  double lineRelaxation = 1.3;      // line over-relaxation of the single-grid solves
+  // The outer control values: solved on the grid coarsened around the loop until it has at
+  // most this many nodes (all rows kept), to this residual or for at most this many sweeps
+  // (then taken as they are), each sweep moving them this fraction of the way to the values
+  // the outer row asks for (0.2 diverged on the tutorials), clipped to this size (above 2
+  // the line systems lose diagonal dominance).
+  int controlGridLoop = 80;
+  double controlTolerance = 1e-4;
+  int controlMaxSweeps = 400;
+  double controlRelaxation = 0.05;
   double controlLimit = 1.0;
 };
 
 struct EllipticReport {
-  int sweeps = 0;
+  int iterations = 0;      // V-cycles (multigrid) or sweeps on the full grid
+  int controlSweeps = 0;   // sweeps of the coarse grid that found the outer control values
   double residual = 0;
   bool converged = false;
 };

@@ -11,7 +11,7 @@
 // far field (docs/elliptic-smoothing.md).
 //
 // Central differences with unit index spacing; i is periodic (the seam node i = ni - 1
-// repeats i = 0); rows j < fixedRows and the outer row stay where they are. A sweep is one
+// repeats i = 0); only the rows of MovingRows move. A sweep is one
 // pass of j-line Gauss-Seidel (tridiagonal solves along each i = const line) followed by
 // one pass of i-line Gauss-Seidel (cyclic tridiagonal solves around each j = const loop),
 // the coefficients frozen at the current grid: the i-lines carry the slow mode around the
@@ -24,22 +24,31 @@
 namespace passageMesh {
 
 // Control functions at the nodes, index i + (ni - 1) j for i < ni - 1; empty means zero.
+// forceX, forceY: a right-hand side for the x and y equations (empty: zero), what the
+// coarse grids of the full approximation scheme (ThompsonMultigrid.hpp) solve for.
 struct GridControl {
   std::vector<double> phi, psi;
+  std::vector<double> forceX, forceY;
+};
+
+// The rows a solve moves: j in [below, nj - 1 - above); the `below` rows from the wall and
+// the `above` rows at the outer loop stay where they are.
+struct MovingRows {
+  int below = 1;
+  int above = 1;
+  int first() const { return below; }
+  int last(const StructuredBlock& b) const { return b.nj - 1 - above; }
 };
 
 struct ThompsonOptions {
   int maxSweeps = 5000;
   // Converged when residual() is at most this (see ThompsonReport::residual).
   double tolerance = 1e-9;
-  int fixedRows = 1;  // rows j < fixedRows are not moved (1: the wall only)
+  MovingRows rows;    // default: all but the wall and the outer row
   bool iLines = true; // alternate j-line and i-line sweeps (false: j-lines only)
   // Each line solve moves its nodes this multiple of the way to the line's solution
   // (successive line over-relaxation; above about 1.5 the cold start diverges).
   double relaxation = 1.0;
-  // The residual is measured from this row outwards (-1: from fixedRows). A fixed row whose
-  // control functions are being solved for (EllipticSmoother's row 1) belongs in it.
-  int residualFirstRow = -1;
 };
 
 struct ThompsonReport {
@@ -59,9 +68,18 @@ ThompsonReport solveThompson(StructuredBlock& oBlock, GridControl& control,
                              const ThompsonOptions& options = {},
                              const ControlUpdate& update = {});
 
-// The residual measure of ThompsonReport for the grid as it is.
-// from row `firstRow` to nj - 2.
+// One sweep (j-lines, then i-lines when iLines) of the moving rows.
+void sweepThompson(StructuredBlock& oBlock, const GridControl& control, const MovingRows& rows,
+                   double relaxation, bool iLines = true);
+
+// The left-hand side minus the force of both equations at every node of the moving rows
+// (index i + (ni - 1) j; other entries untouched). `rx`, `ry` are resized.
+void thompsonResidualField(const StructuredBlock& oBlock, const GridControl& control,
+                           const MovingRows& rows, std::vector<double>& rx,
+                           std::vector<double>& ry);
+
+// The residual measure of ThompsonReport over the moving rows, for the grid as it is.
 double thompsonResidual(const StructuredBlock& oBlock, const GridControl& control,
-                        int firstRow);
+                        const MovingRows& rows);
 
 }  // namespace passageMesh
