@@ -4,9 +4,8 @@
 
 #include <cmath>
 #include <fstream>
-#include <sstream>
 
-#include "../TestFiles.hpp"
+#include "../utilities/UtilityTestSupport.hpp"
 #include "passageMesh/optimize/MeshingParameterSpace.hpp"
 #include "passageMesh/workflow/MeshingOptimizationFiles.hpp"
 #include "passageMesh/workflow/OptimizationProgressLine.hpp"
@@ -17,13 +16,6 @@ using namespace passageMesh::testData;
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string readText(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Two evaluations: the defaults (Q 0.3) and a better point (Q 0.4).
 MeshingOptimization madeUpRun(double secondQ) {
