@@ -99,7 +99,7 @@ MeshingParameters readMeshDict(const std::filesystem::path& file, double chord,
   return clipToRange(p, chord, warnings, file.string());
 }
 
-void writeMeshDict(const std::filesystem::path& file, const MeshingParameters& p) {
+std::string meshDictXml(const MeshingParameters& p) {
   Dictionary dict("meshDict");
   dict.setComment("passageMesh meshing parameters; yIn, yOut in metres. See docs/case-format.md.");
   const auto v = p.toArray();
@@ -109,7 +109,11 @@ void writeMeshDict(const std::filesystem::path& file, const MeshingParameters& p
     else
       dict.set(MeshingParameters::names()[k], v[k]);
   }
-  dict.write(file);
+  return dict.toXml();
+}
+
+void writeMeshDict(const std::filesystem::path& file, const MeshingParameters& p) {
+  writeFileAtomically(file, meshDictXml(p));
 }
 
 }  // namespace passageMesh

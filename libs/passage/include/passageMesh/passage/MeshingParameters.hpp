@@ -42,6 +42,9 @@ MeshingParameters clipToRange(const MeshingParameters& p, double chord,
 // box is clipped with a warning.
 MeshingParameters readMeshDict(const std::filesystem::path& file, double chord,
                                std::vector<std::string>* warnings = nullptr);
+// The meshDict.xml text (lengths in metres, 17 significant digits), and that text
+// written atomically.
+std::string meshDictXml(const MeshingParameters& p);
 void writeMeshDict(const std::filesystem::path& file, const MeshingParameters& p);
 
 }  // namespace passageMesh
