@@ -23,8 +23,8 @@ using namespace passageMesh;
 int main(int argc, char** argv) {
   const int repetitions = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
   const std::filesystem::path tutorials = std::filesystem::path(PASSAGEMESH_SOURCE_DIR) / "tutorials";
-  std::printf("| blade | O-block | sweeps | residual | median time [s] | Q_J min | Q_J mean | "
-              "Q_S min | Q_S mean | Q |\n|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| blade | O-block | V-cycles | control sweeps | residual | median time [s] | Q_J min | Q_J mean | "
+              "Q_S min | Q_S mean | Q |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string name : {"LS89", "STD10", "T106A", "SIRT"}) {
     const auto dir = tutorials / name;
     const auto points = orderBladePoints(readPointFile(dir / "constant" / "bladePoints.dat")).points;
@@ -41,8 +41,8 @@ int main(int argc, char** argv) {
     }
     std::sort(seconds.begin(), seconds.end());
     const MeshQuality q = computeMeshQuality(hoh.mesh);
-    std::printf("| %s | %d x %d | %d | %.2e | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f%s |\n",
-                name.c_str(), parameters.nT, hoh.nN, hoh.smoothing.iterations, hoh.smoothing.residual,
+    std::printf("| %s | %d x %d | %d | %d | %.2e | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f%s |\n",
+                name.c_str(), parameters.nT, hoh.nN, hoh.smoothing.iterations, hoh.smoothing.controlSweeps, hoh.smoothing.residual,
                 seconds[seconds.size() / 2], q.QJmin, q.QJavg, q.QSmin, q.QSavg, q.Q,
                 hoh.valid ? "" : " (INVALID)");
   }

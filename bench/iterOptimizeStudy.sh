@@ -1,0 +1,50 @@
+#!/bin/bash
+# Best Q against evaluations for the tutorials (issue 5): iterOptimize from the default
+# meshing parameters, several seeds per tutorial, each run on a copy of the tutorial in a
+# temporary folder.
+#
+#   bench/iterOptimizeStudy.sh [budget=1000] [seeds=10] [method=cmaes] [out=docs/iterOptimize]
+#
+# Writes OUT/<blade>-<method>.csv (evaluation, then the best Q so far of every seed, then
+# mean, min and max over the seeds) and OUT/<blade>-<method>.png, and prints per blade the
+# best Q ever found, the median over the seeds of the evaluations needed to reach 0.99 of
+# it, and the median final best Q.
+set -euo pipefail
+budget="${1:-1000}"
+seeds="${2:-10}"
+method="${3:-cmaes}"
+here="$(cd "$(dirname "$0")/.." && pwd)"
+out="${4:-$here/docs/iterOptimize}"
+mkdir -p "$out"
+. "$here/etc/bashrc"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+for blade in LS89 STD10 T106A SIRT; do
+  base="$work/$blade"
+  cp -r "$here/tutorials/$blade" "$base"
+  (cd "$base" && bladeFit -case . > /dev/null)
+  for seed in $(seq 1 "$seeds"); do
+    run="$work/$blade-$seed"
+    cp -r "$base" "$run"
+    iterOptimize -case "$run" -budget "$budget" -seed "$seed" -method "$method" > /dev/null 2>&1 || true
+    # column of best-so-far Q (the last column of history.csv)
+    awk -F, 'NR > 1 { print $NF }' "$run/postProcessing/iterOptimize/history.csv" > "$work/$blade-$seed.best"
+  done
+  table="$out/$blade-$method.csv"
+  paste -d, $(for s in $(seq 1 "$seeds"); do echo "$work/$blade-$s.best"; done) |
+    awk -F, -v n="$seeds" 'BEGIN { printf "evaluation"; for (s = 1; s <= n; ++s) printf ",seed%d", s; print ",mean,min,max" }
+      { sum = 0; lo = 1e9; hi = -1e9; printf "%d", NR
+        for (s = 1; s <= NF; ++s) { printf ",%.6f", $s; sum += $s; if ($s < lo) lo = $s; if ($s > hi) hi = $s }
+        printf ",%.6f,%.6f,%.6f\n", sum / NF, lo, hi }' > "$table"
+  best=$(awk -F, -v n="$seeds" 'NR > 1 { for (s = 2; s <= n + 1; ++s) if ($s > b) b = $s } END { printf "%.6f", b }' "$table")
+  median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+  reach=$(awk -F, -v n="$seeds" -v b="$best" 'NR > 1 { for (s = 2; s <= n + 1; ++s) if (!(s in hit) && $s >= 0.99 * b) hit[s] = $1 }
+      END { for (s = 2; s <= n + 1; ++s) print (s in hit) ? hit[s] : "inf" }' "$table" | median)
+  final=$(tail -n 1 "$table" | awk -F, -v n="$seeds" '{ for (s = 2; s <= n + 1; ++s) print $s }' | median)
+  echo "$blade $method: best Q ever $best; median evaluations to 0.99 of it $reach; median final best $final (budget $budget, $seeds seeds)"
+  gnuplot -e "set terminal pngcairo size 900,600; set output '$out/$blade-$method.png';
+    set datafile separator ','; set key bottom right; set xlabel 'mesh evaluations'; set ylabel 'best Q so far';
+    set title '$blade, $method, $seeds seeds'; set yrange [0:*];
+    plot '$table' every ::1 using 1:$((seeds + 3)):$((seeds + 4)) with filledcurves lc rgb '#cccccc' title 'min-max',
+         '' every ::1 using 1:$((seeds + 2)) with lines lw 2 title 'mean'"
+done
