@@ -11,7 +11,6 @@ namespace passageMesh {
 
 namespace {
 
-const MovingRows movingRows{2, 1};  // the wall and the first row, the outer loop
 
 double distance(const StructuredBlock& o, int i0, int j0, int i1, int j1) {
   return std::hypot(o.xAt(i1, j1) - o.xAt(i0, j0), o.yAt(i1, j1) - o.yAt(i0, j0));
@@ -110,6 +109,15 @@ ControlUpdate outerControlUpdate(Controls& c, double relax, double limit) {
   };
 }
 
+// Fixed below: the wall, the first row and the rest of the wall layer; above: the outer
+// loop.
+MovingRows movingRows(const StructuredBlock& o, const EllipticOptions& options) {
+  MovingRows rows;
+  rows.below = 1 + std::clamp(o.nj / options.wallLayerFraction, 1, options.wallLayerRows);
+  rows.above = 1;
+  return rows;
+}
+
 // Solves `o` and its outer control values together by single-grid sweeps.
 ThompsonReport solveWithOuterControl(StructuredBlock& o, Controls& c, const EllipticOptions& options,
                                      int maxSweeps, double tolerance) {
@@ -119,7 +127,7 @@ ThompsonReport solveWithOuterControl(StructuredBlock& o, Controls& c, const Elli
   single.maxSweeps = maxSweeps;
   single.tolerance = tolerance;
   single.relaxation = options.lineRelaxation;
-  single.rows = movingRows;
+  single.rows = movingRows(o, options);
   return solveThompson(o, control, single, update);
 }
 
@@ -131,7 +139,7 @@ int outerControlFromCoarseGrid(StructuredBlock& o, Controls& fine, const Ellipti
   while (initial.back().ni - 1 > options.controlGridLoop) {
     // Around the loop only: psi, the spacing control along the lines, does not carry
     // over between grids with other rows (measured: the first cells then grew 4-fold).
-    const Coarsening c = coarseningOf(initial.back(), movingRows, 8, 1 << 30);
+    const Coarsening c = coarseningOf(initial.back(), movingRows(o, options), 8, 1 << 30);
     if (!c.any()) break;
     steps.push_back(c);
     initial.push_back(coarseBlock(initial.back(), c));
@@ -147,7 +155,7 @@ int outerControlFromCoarseGrid(StructuredBlock& o, Controls& fine, const Ellipti
   std::vector<double> phi = controls.outerPhi, psi = controls.outerPsi, dx, dy;
   for (std::size_t l = steps.size(); l-- > 0;) {
     StructuredBlock finer = initial[l];
-    interpolateDisplacement(initial[l + 1], solved, steps[l], finer, movingRows, dx, dy);
+    interpolateDisplacement(initial[l + 1], solved, steps[l], finer, movingRows(o, options), dx, dy);
     for (std::size_t k = 0; k < finer.x.size(); ++k) {
       finer.x[k] += dx[k];
       finer.y[k] += dy[k];
@@ -181,7 +189,7 @@ EllipticReport smoothOBlock(StructuredBlock& o, const EllipticOptions& options) 
   MultigridOptions mg;
   mg.tolerance = options.tolerance;
   mg.maxCycles = options.maxCycles;
-  mg.rows = movingRows;
+  mg.rows = movingRows(o, options);
   const MultigridReport r = solveThompsonMultigrid(o, control, mg);
   report.iterations = r.cycles;
   report.residual = r.residual;
