@@ -192,20 +192,19 @@ MultigridReport solveThompsonMultigrid(StructuredBlock& o, GridControl& control,
   Multigrid multigrid(o, control, options);
   MultigridReport report;
   report.levels = multigrid.levels();
-  for (int cycle = 1; cycle <= options.maxCycles; ++cycle) {
-    if (update) {
-      update(o, control);
-      multigrid.setControl(control);
-    }
-    multigrid.cycle();
-    report.cycles = cycle;
-    report.residual = thompsonResidual(o, control, options.rows);
-    if (!std::isfinite(report.residual)) break;
-    if (report.residual <= options.tolerance) {
-      report.converged = true;
-      break;
-    }
-  }
+  const ThompsonReport r = iterateUntilConverged(
+      options.maxCycles, options.tolerance,
+      [&] {
+        if (update) {
+          update(o, control);
+          multigrid.setControl(control);
+        }
+        multigrid.cycle();
+      },
+      [&] { return thompsonResidual(o, control, options.rows); });
+  report.cycles = r.sweeps;
+  report.residual = r.residual;
+  report.converged = r.converged;
   return report;
 }
 

@@ -259,18 +259,29 @@ ThompsonReport solveThompson(StructuredBlock& o, GridControl& control,
                              const ThompsonOptions& options, const ControlUpdate& update) {
   checkSizes(o, control, options.rows);
   LineSweeps sweeps(o, control, options.rows, options.relaxation);
+  return iterateUntilConverged(
+      options.maxSweeps, options.tolerance,
+      [&] {
+        if (update) {
+          update(o, control);
+          checkSizes(o, control, options.rows);
+        }
+        sweeps.jLines();
+        if (options.iLines) sweeps.iLines();
+      },
+      [&] { return thompsonResidual(o, control, options.rows); });
+}
+
+ThompsonReport iterateUntilConverged(int maxIterations, double tolerance,
+                                     const std::function<void()>& iteration,
+                                     const std::function<double()>& residual) {
   ThompsonReport report;
-  for (int sweep = 1; sweep <= options.maxSweeps; ++sweep) {
-    if (update) {
-      update(o, control);
-      checkSizes(o, control, options.rows);
-    }
-    sweeps.jLines();
-    if (options.iLines) sweeps.iLines();
-    report.sweeps = sweep;
-    report.residual = thompsonResidual(o, control, options.rows);
+  for (int k = 1; k <= maxIterations; ++k) {
+    iteration();
+    report.sweeps = k;
+    report.residual = residual();
     if (!std::isfinite(report.residual)) break;
-    if (report.residual <= options.tolerance) {
+    if (report.residual <= tolerance) {
       report.converged = true;
       break;
     }

@@ -64,6 +64,12 @@ struct ThompsonReport {
 // wall-layer values of EllipticSmoother) or leave them.
 using ControlUpdate = std::function<void(const StructuredBlock&, GridControl&)>;
 
+// Runs `iteration` until `residual()` is at most `tolerance` (converged), is not finite, or
+// `maxIterations` have run; the loop shared by the single-grid and multigrid solvers.
+ThompsonReport iterateUntilConverged(int maxIterations, double tolerance,
+                                     const std::function<void()>& iteration,
+                                     const std::function<double()>& residual);
+
 ThompsonReport solveThompson(StructuredBlock& oBlock, GridControl& control,
                              const ThompsonOptions& options = {},
                              const ControlUpdate& update = {});
