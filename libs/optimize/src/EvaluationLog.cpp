@@ -64,6 +64,10 @@ double EvaluationLog::bestValue() const {
   return bestIndex_ < 0 ? -std::numeric_limits<double>::infinity() : history_[bestIndex_].value;
 }
 
+Eigen::VectorXd EvaluationLog::bestUnitPoint() const {
+  return bestIndex_ < 0 ? Eigen::VectorXd() : problem_.toUnit(history_[bestIndex_].point);
+}
+
 OptimizationResult EvaluationLog::result(const std::string& method, int restarts) const {
   OptimizationResult r;
   r.method = method;

@@ -38,6 +38,9 @@ class EvaluationLog {
   void reportProgress() const;
   // The largest value so far; -infinity before the first evaluation.
   double bestValue() const;
+  // The best point so far in the unit cube (as evaluated: integer dimensions rounded);
+  // empty before the first evaluation.
+  Eigen::VectorXd bestUnitPoint() const;
 
   OptimizationResult result(const std::string& method, int restarts) const;
 
