@@ -13,19 +13,13 @@
 #include <random>
 #include <vector>
 
-#include "passageMesh/blade/BladeSampler.hpp"
 #include "passageMesh/core/ParallelFor.hpp"
 #include "passageMesh/mesh/HohMesh.hpp"
+#include "passageMesh/passage/PassageSampler.hpp"
 
 using namespace passageMesh;
 
 namespace {
-
-struct Draw {
-  BladeParameters blade;
-  PassageCondition condition;
-  MeshingParameters parameters;
-};
 
 struct Outcome {
   bool valid = false, finite = true, converged = false;
@@ -34,33 +28,16 @@ struct Outcome {
   std::string problem;
 };
 
-double between(std::mt19937_64& rng, double a, double b) { return a + (b - a) * uniform01(rng); }
-
 }  // namespace
 
 int main(int argc, char** argv) {
   const int draws = argc > 1 ? std::atoi(argv[1]) : 500;
   const std::uint64_t seed = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 20261122;
   const int threads = argc > 3 ? std::atoi(argv[3]) : 1;
-  BladeSampler sampler(BladeParameterRange::readDefault(), seed);
-  std::mt19937_64 rng(seed + 1);
-  std::vector<Draw> all(static_cast<std::size_t>(draws));
-  for (auto& d : all) {
-    d.blade = sampler.next();
-    const double c = d.blade.chord;
-    d.condition.pitch = between(rng, 0.3, 1.0) * c;
-    d.condition.xIn = between(rng, 0.0, 1.0) * c;
-    d.condition.xOut = between(rng, 0.0, 1.0) * c;
-    d.condition.nO = static_cast<int>(std::lround(between(rng, 10000, 50000)));
-    d.condition.firstCellHeight = between(rng, 2e-5, 2e-4) * c;
-    std::array<double, MeshingParameters::size> x;
-    const auto lo = MeshingParameters::lowerBounds(c), hi = MeshingParameters::upperBounds(c);
-    for (std::size_t k = 0; k < x.size(); ++k) x[k] = between(rng, lo[k], hi[k]);
-    d.parameters = MeshingParameters::fromArray(x);
-  }
+  const std::vector<PassageDraw> all = samplePassages(draws, seed);
   std::vector<Outcome> outcomes(all.size());
   parallelFor(draws, threads, [&](int k) {
-    const Draw& d = all[static_cast<std::size_t>(k)];
+    const PassageDraw& d = all[static_cast<std::size_t>(k)];
     Outcome& out = outcomes[static_cast<std::size_t>(k)];
     const auto start = std::chrono::steady_clock::now();
     const HohMesh hoh = buildHohMesh(BladeShape(d.blade), d.condition, d.parameters);
@@ -69,14 +46,12 @@ int main(int argc, char** argv) {
     out.problem = hoh.problem;
     out.converged = hoh.smoothing.converged;
     out.sweeps = hoh.smoothing.iterations;
-    for (const auto& b : hoh.mesh.blocks)
-      for (std::size_t n = 0; n < b.x.size(); ++n)
-        if (!std::isfinite(b.x[n]) || !std::isfinite(b.y[n])) out.finite = false;
+    out.finite = hasOnlyFiniteCoordinates(hoh.mesh);
   });
   int valid = 0, notFinite = 0, notConverged = 0;
   double slowest = 0;
   for (int k = 0; k < draws; ++k) {
-    const Draw& d = all[static_cast<std::size_t>(k)];
+    const PassageDraw& d = all[static_cast<std::size_t>(k)];
     const Outcome& o = outcomes[static_cast<std::size_t>(k)];
     valid += o.valid;
     notFinite += o.valid && !o.finite;

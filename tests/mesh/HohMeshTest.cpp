@@ -80,3 +80,26 @@ TEST(HohMesh, FindsFoldedCells) {
   mesh.blocks[0].x = {0, 1, 1, 0};  // corners swapped: a bow tie
   EXPECT_NE(findInvalidCell(mesh), "");
 }
+
+// A periodic boundary moved far off the camber line at a small pitch cuts through the
+// blade: no mesh exists, and the result says which boundary and where, without smoothing.
+TEST(HohMesh, SaysWhenAPeriodicBoundaryCutsTheBlade) {
+  const BladeShape blade(testData::typicalTurbineBlade());
+  const double C = blade.parameters().chord;
+  PassageCondition c = paperCondition(C);
+  c.pitch = 0.3 * C;
+  for (double yIn : {0.5 * C, -0.5 * C}) {
+    MeshingParameters m = MeshingParameters::defaults(C);
+    m.yIn = yIn;
+    const HohMesh hoh = buildHohMesh(blade, c, m);
+    EXPECT_FALSE(hoh.valid);
+    EXPECT_NE(hoh.problem.find(yIn > 0 ? "the lower periodic boundary cuts the blade at x = "
+                                       : "the upper periodic boundary cuts the blade at x = "),
+              std::string::npos)
+        << hoh.problem;
+    EXPECT_EQ(hoh.smoothing.iterations, 0);
+  }
+  // The defaults at the same pitch keep the blade inside.
+  const HohMesh ok = buildHohMesh(blade, c, MeshingParameters::defaults(C));
+  EXPECT_EQ(ok.problem.find("cuts the blade"), std::string::npos) << ok.problem;
+}

@@ -1,6 +1,7 @@
 #include "passageMesh/mesh/HohMesh.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "passageMesh/mesh/BladeNodes.hpp"
@@ -67,6 +68,27 @@ void fillNormalLine(StructuredBlock& block, int i, const Eigen::Vector2d& b,
   }
 }
 
+// The blade must lie strictly between the periodic boundaries. Large yIn or yOut, or a
+// small alphaCamber at a small pitch, make one of them cut through the blade: then no
+// mesh exists, and saying so here is clearer (and cheaper) than the folded cells or the
+// diverging smoother it would otherwise end in.
+std::string periodicBoundaryCrossing(const PassageBoundary& boundary,
+                                     const std::vector<BladeNode>& wall) {
+  for (const auto& node : wall) {
+    const double x = node.point.x(), y = node.point.y();
+    if (x < boundary.inletInterfaceX() || x > boundary.outletInterfaceX()) continue;
+    const bool below = y <= boundary.lowerY(x), above = y >= boundary.upperY(x);
+    if (below || above) {
+      char where[64];
+      std::snprintf(where, sizeof where, "%.6g m", x);
+      return std::string("the ") + (below ? "lower" : "upper") +
+             " periodic boundary cuts the blade at x = " + where +
+             " (yIn, yOut or alphaCamber too far from the camber line for this pitch)";
+    }
+  }
+  return "";
+}
+
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();
 }
@@ -100,6 +122,8 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
   const PassageBoundary boundary(blade, condition, parameters);
 
   const auto wall = distributeBladeNodes(blade, nT, parameters.gammaLe, parameters.gammaTe);
+  result.problem = periodicBoundaryCrossing(boundary, wall);
+  if (!result.problem.empty()) return result;
   int lowerIntervals = 0;
   while (wall[static_cast<std::size_t>(lowerIntervals)].side == BladeSide::lower) ++lowerIntervals;
   OuterLoop outer;

@@ -34,11 +34,13 @@ PassageCondition readPassageDict(const std::filesystem::path& file, double chord
       warnings->push_back(file.string() + ":" + std::to_string(dict.line(key)) + ": <" + key +
                           "> " + dict.text(key) + " is outside the method's range " + range);
   };
-  outside("pitch", c.pitch / chord, 0.3, 1.0, "0.3c..1c");
-  outside("xIn", c.xIn / chord, 0.0, 1.0, "0..1c");
-  outside("xOut", c.xOut / chord, 0.0, 1.0, "0..1c");
-  outside("nO", c.nO, 10000, 50000, "10000..50000");
-  outside("firstCellHeight", c.firstCellHeight / chord, 2e-5, 2e-4, "2e-5c..2e-4c");
+  using R = PassageConditionRange;
+  outside("pitch", c.pitch / chord, R::pitchMin, R::pitchMax, "0.3c..1c");
+  outside("xIn", c.xIn / chord, R::xInMin, R::xInMax, "0..1c");
+  outside("xOut", c.xOut / chord, R::xOutMin, R::xOutMax, "0..1c");
+  outside("nO", c.nO, R::nOMin, R::nOMax, "10000..50000");
+  outside("firstCellHeight", c.firstCellHeight / chord, R::firstCellHeightMin,
+          R::firstCellHeightMax, "2e-5c..2e-4c");
   return c;
 }
 

@@ -9,6 +9,7 @@
 // direction the range runs.
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -53,5 +54,13 @@ struct StructuredMesh {
   std::vector<BlockConnection> connections;
   std::vector<BoundaryPatch> patches;
 };
+
+// True when no node of any block has an infinite or NaN coordinate.
+inline bool hasOnlyFiniteCoordinates(const StructuredMesh& mesh) {
+  for (const auto& b : mesh.blocks)
+    for (std::size_t n = 0; n < b.x.size(); ++n)
+      if (!std::isfinite(b.x[n]) || !std::isfinite(b.y[n])) return false;
+  return true;
+}
 
 }  // namespace passageMesh

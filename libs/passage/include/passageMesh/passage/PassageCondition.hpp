@@ -15,6 +15,16 @@ struct PassageCondition {
   double firstCellHeight = 0;  // first cell height normal to the blade
 };
 
+// The method's range of each condition value (method.md section 1), lengths in chords:
+// outside it readPassageDict warns, and the sampler (PassageSampler.hpp) draws inside it.
+struct PassageConditionRange {
+  static constexpr double pitchMin = 0.3, pitchMax = 1.0;
+  static constexpr double xInMin = 0.0, xInMax = 1.0;
+  static constexpr double xOutMin = 0.0, xOutMax = 1.0;
+  static constexpr int nOMin = 10000, nOMax = 50000;
+  static constexpr double firstCellHeightMin = 2e-5, firstCellHeightMax = 2e-4;
+};
+
 // Reads system/passageDict.xml; lengths may be given in chords ("0.5c"). Values that no
 // mesh can have (pitch <= 0, negative distances, nO < 100, firstCellHeight <= 0) are an
 // InputError naming file and line. Values outside the method's range (method.md section 1:
