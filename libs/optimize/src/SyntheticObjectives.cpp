@@ -1,5 +1,6 @@
 #include "passageMesh/optimize/SyntheticObjectives.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "passageMesh/optimize/MeshingParameterSpace.hpp"
@@ -63,8 +64,17 @@ SyntheticProblem shiftedRastrigin() {
   });
 }
 
+SyntheticProblem bowlInNarrowValidTube() {
+  return makeProblem("bowlInNarrowValidTube", [](const Eigen::VectorXd& u, const Eigen::VectorXd& a) {
+    const Eigen::VectorXd centre = Eigen::VectorXd::Constant(u.size(), 0.5), axis = a - centre;
+    const double t = std::clamp((u - centre).dot(axis) / axis.squaredNorm(), 0.0, 1.0);
+    if ((u - centre - t * axis).norm() > 0.08) return -1.0;
+    return peak(u, a);
+  });
+}
+
 std::vector<SyntheticProblem> syntheticProblems() {
-  return {shiftedBowl(), twoPeaksWithInvalidRegion(), shiftedRastrigin()};
+  return {shiftedBowl(), twoPeaksWithInvalidRegion(), shiftedRastrigin(), bowlInNarrowValidTube()};
 }
 
 }  // namespace passageMesh

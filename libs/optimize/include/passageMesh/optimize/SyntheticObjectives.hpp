@@ -28,6 +28,12 @@ SyntheticProblem twoPeaksWithInvalidRegion();
 // ripples, five local maxima across each dimension.
 SyntheticProblem shiftedRastrigin();
 
+// The bowl, valid only in a narrow tube (radius 0.08 of the unit cube) from the box
+// centre, where every method starts, to the optimum; -1 (an invalid mesh) everywhere
+// else, about 99.99 % of the box. Like the mesh quality of a real blade, where only
+// parameters near a working set give a valid mesh (docs/optimization.md).
+SyntheticProblem bowlInNarrowValidTube();
+
 std::vector<SyntheticProblem> syntheticProblems();
 
 }  // namespace passageMesh
