@@ -95,3 +95,15 @@ TEST(EllipticMeshCommand, AFoldedMeshIsAnErrorAndWritesNothing) {
   EXPECT_NE(r.err.find("the mesh is invalid"), std::string::npos) << r.err;
   expectNoMesh(dir);
 }
+
+TEST(EllipticMeshCommand, APeriodicBoundaryThroughTheBladeIsAnErrorAndWritesNothing) {
+  // Half a chord of offset at the inlet with a pitch of 0.3 chords: the lower periodic
+  // boundary runs through the blade, no passage exists, nothing is smoothed.
+  const auto dir = caseWith("cut", passageDict("0.3c"), "<meshDict><yIn>0.5c</yIn></meshDict>");
+  const RunResult r = runTool(ellipticMesh, dir);
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.err.find("the lower periodic boundary cuts the blade at x = "), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.out.find("not smoothed"), std::string::npos) << r.out;
+  expectNoMesh(dir);
+}

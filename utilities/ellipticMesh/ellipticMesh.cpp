@@ -29,9 +29,12 @@ int main(int argc, char* argv[]) {
 
     const HohMesh hoh = buildHohMesh(input.blade, condition, parameters);
     const EllipticReport& s = hoh.smoothing;
-    std::printf("ellipticMesh: O-block %d x %d nodes; elliptic smoothing: %d multigrid cycles, residual "
-                "%.3e (%s)\n", parameters.nT, hoh.nN, s.iterations, s.residual,
-                s.converged ? "converged" : "NOT converged");
+    if (s.iterations > 0)
+      std::printf("ellipticMesh: O-block %d x %d nodes; elliptic smoothing: %d multigrid cycles, "
+                  "residual %.3e (%s)\n", parameters.nT, hoh.nN, s.iterations, s.residual,
+                  s.converged ? "converged" : "NOT converged");
+    else  // refused before smoothing (a boundary cutting the blade, an impossible clustering)
+      std::printf("ellipticMesh: O-block %d x %d nodes; not smoothed\n", parameters.nT, hoh.nN);
     if (!hoh.valid) throw std::runtime_error("the mesh is invalid: " + hoh.problem);
 
     const StructuredBlock& o = hoh.mesh.blocks[1];
