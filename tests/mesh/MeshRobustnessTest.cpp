@@ -29,9 +29,10 @@ TEST(MeshRobustness, EveryRandomPassageEndsAsAValidMeshOrWithItsReason) {
       const HohMesh hoh = buildHohMesh(BladeShape(d.blade), d.condition, d.parameters);
       if (hoh.valid) {
         ++valid;
+        const std::string folded = findInvalidCell(hoh.mesh);
         if (!hoh.problem.empty()) what = "valid but with a problem: " + hoh.problem;
         else if (!hasOnlyFiniteCoordinates(hoh.mesh)) what = "valid with a non-finite coordinate";
-        else if (!findInvalidCell(hoh.mesh).empty()) what = "valid with " + findInvalidCell(hoh.mesh);
+        else if (!folded.empty()) what = "valid with " + folded;
       } else if (hoh.problem.empty()) {
         what = "invalid without a reason";
       }

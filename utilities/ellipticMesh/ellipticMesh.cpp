@@ -33,7 +33,8 @@ int main(int argc, char* argv[]) {
       std::printf("ellipticMesh: O-block %d x %d nodes; elliptic smoothing: %d multigrid cycles, "
                   "residual %.3e (%s)\n", parameters.nT, hoh.nN, s.iterations, s.residual,
                   s.converged ? "converged" : "NOT converged");
-    else  // refused before smoothing (a boundary cutting the blade, an impossible clustering)
+    else  // refused before smoothing (a boundary through the blade, an impossible clustering),
+          // or too few rows to smooth
       std::printf("ellipticMesh: O-block %d x %d nodes; not smoothed\n", parameters.nT, hoh.nN);
     if (!hoh.valid) throw std::runtime_error("the mesh is invalid: " + hoh.problem);
 

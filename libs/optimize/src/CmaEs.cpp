@@ -101,10 +101,12 @@ class CmaEsStart {
     int flatGenerations = 0;
     for (int generation = 0; !log.finished(); ++generation) {
       Eigen::MatrixXd y(n_, p_.lambda);  // the steps B D z, one per column
+      std::vector<double> zLength(p_.lambda);  // |z|: a step's length in C's own metric
       std::vector<Eigen::VectorXd> unitPoints(p_.lambda);
       for (int k = 0; k < p_.lambda; ++k) {
         Eigen::VectorXd z(n_);
         for (int i = 0; i < n_; ++i) z[i] = normal();
+        zLength[k] = z.norm();
         y.col(k) = B_ * D_.asDiagonal() * z;
         unitPoints[k] = (mean_ + sigma_ * y.col(k)).unaryExpr(&mirrorIntoUnit);
       }
@@ -118,7 +120,7 @@ class CmaEsStart {
       std::iota(order.begin(), order.end(), 0);
       std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
         if (values[a] != values[b]) return values[a] > values[b];
-        return whitenedLength(y.col(a)) < whitenedLength(y.col(b));
+        return zLength[a] < zLength[b];
       });
       update(y, order, generation);
 
@@ -153,11 +155,6 @@ class CmaEsStart {
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(C_);
     B_ = eigen.eigenvectors();
     D_ = eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt();
-  }
-
-  // |C^(-1/2) y|: the length of a step in the distribution's own metric.
-  double whitenedLength(const Eigen::VectorXd& y) const {
-    return (B_.transpose() * y).cwiseQuotient(D_.cwiseMax(1e-300)).norm();
   }
 
   bool converged(const std::vector<double>& recentBest, int historyLength, double generationRange) const {
