@@ -54,9 +54,10 @@ OptimizerOptions optimizerOptions(const po::variables_map& values) {
 }
 
 void printBest(const MeshingOptimization& run) {
-  std::printf("iterOptimize: %ld evaluations (%d starts of %s); start Q %.17g, best Q %.17g "
+  std::printf("iterOptimize: %ld evaluations (%d %s of %s); start Q %.17g, best Q %.17g "
               "(evaluation %ld)\n  best meshing parameters (yIn, yOut in metres):\n",
-              run.result.evaluations, run.result.restarts, run.result.method.c_str(),
+              run.result.evaluations, run.result.restarts, run.result.restarts == 1 ? "start" : "starts",
+              run.result.method.c_str(),
               run.startQuality(), run.result.bestValue, run.bestEvaluation());
   const auto& names = MeshingParameters::names();
   const auto values = run.best.toArray();
