@@ -7,10 +7,8 @@
 //
 // Prints one line per draw and the valid fraction (docs/benchmarks.md).
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 #include <vector>
 
 #include "passageMesh/core/ParallelFor.hpp"

@@ -13,7 +13,7 @@ namespace {
 // Every method with the budget in which it must reach 0.99 of the maximum (from
 // docs/benchmarks.md: at least twice its median need on the two-peak objective for the
 // local NLopt methods; cmaes, whose local starts make it slower past the decoy peak,
-// has a median of 2384 there, 8 of 10 seeds, and seed 7 gets there within 3000; the
+// has a median of 2499 there, 6 of 10 seeds, and seed 7 gets there within 3000; the
 // global methods get the budgets they need).
 struct MethodBudget {
   std::string method;
