@@ -10,6 +10,9 @@
 # best Q ever found (this study or docs/iterOptimize/best-ever.csv), how many seeds reach
 # 0.99 of it, the median over the seeds of the evaluations needed (inf: most never do),
 # and the median final best Q.
+#
+# RESCORE=1 bench/iterOptimizeStudy.sh ... runs nothing: it scores the CSVs already in OUT
+# again (after best-ever.csv changed) and redraws the plots.
 set -euo pipefail
 budget="${1:-1000}"
 seeds="${2:-10}"
@@ -23,29 +26,34 @@ bestEver="$here/docs/iterOptimize/best-ever.csv"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 for blade in LS89 STD10 T106A SIRT; do
-  base="$work/$blade"
-  cp -r "$here/tutorials/$blade" "$base"
-  (cd "$base" && bladeFit -case . > /dev/null)
-  # The seeds run side by side, one thread each (a run's history does not depend on its
-  # threads): no core waits for the slowest mesh of a population.
-  runSeed() {
-    local run="$work/$blade-$1"
-    cp -r "$base" "$run"
-    iterOptimize -case "$run" -budget "$budget" -seed "$1" -method "$method" -threads 1 > /dev/null 2>&1 || true
-    # column of best-so-far Q (the last column of history.csv)
-    awk -F, 'NR > 1 { print $NF }' "$run/postProcessing/iterOptimize/history.csv" > "$work/$blade-$1.best"
-  }
-  for seed in $(seq 1 "$seeds"); do
-    while [ "$(jobs -rp | wc -l)" -ge "$parallel" ]; do wait -n; done
-    runSeed "$seed" &
-  done
-  wait
   table="$out/$blade-$method.csv"
-  paste -d, $(for s in $(seq 1 "$seeds"); do echo "$work/$blade-$s.best"; done) |
-    awk -F, -v n="$seeds" 'BEGIN { printf "evaluation"; for (s = 1; s <= n; ++s) printf ",seed%d", s; print ",mean,min,max" }
-      { sum = 0; lo = 1e9; hi = -1e9; printf "%d", NR
-        for (s = 1; s <= NF; ++s) { printf ",%.6f", $s; sum += $s; if ($s < lo) lo = $s; if ($s > hi) hi = $s }
-        printf ",%.6f,%.6f,%.6f\n", sum / NF, lo, hi }' > "$table"
+  if [ "${RESCORE:-0}" != 1 ]; then
+    base="$work/$blade"
+    cp -r "$here/tutorials/$blade" "$base"
+    (cd "$base" && bladeFit -case . > /dev/null)
+    # The seeds run side by side, one thread each (a run's history does not depend on its
+    # threads): no core waits for the slowest mesh of a population.
+    runSeed() {
+      local run="$work/$blade-$1"
+      cp -r "$base" "$run"
+      iterOptimize -case "$run" -budget "$budget" -seed "$1" -method "$method" -threads 1 > /dev/null 2>&1 || true
+      # column of best-so-far Q (the last column of history.csv)
+      awk -F, 'NR > 1 { print $NF }' "$run/postProcessing/iterOptimize/history.csv" > "$work/$blade-$1.best"
+    }
+    for seed in $(seq 1 "$seeds"); do
+      while [ "$(jobs -rp | wc -l)" -ge "$parallel" ]; do wait -n; done
+      runSeed "$seed" &
+    done
+    wait
+    paste -d, $(for s in $(seq 1 "$seeds"); do echo "$work/$blade-$s.best"; done) |
+      awk -F, -v n="$seeds" 'BEGIN { printf "evaluation"; for (s = 1; s <= n; ++s) printf ",seed%d", s; print ",mean,min,max" }
+        { sum = 0; lo = 1e9; hi = -1e9; printf "%d", NR
+          for (s = 1; s <= NF; ++s) { printf ",%.6f", $s; sum += $s; if ($s < lo) lo = $s; if ($s > hi) hi = $s }
+          printf ",%.6f,%.6f,%.6f\n", sum / NF, lo, hi }' > "$table"
+  elif [ ! -f "$table" ]; then
+    echo "iterOptimizeStudy.sh: error: $table: no study to score again (run it without RESCORE=1)" >&2
+    exit 1
+  fi
   study=$(awk -F, -v n="$seeds" 'NR > 1 { for (s = 2; s <= n + 1; ++s) if ($s > b) b = $s } END { printf "%.6f", b }' "$table")
   # The bar is 0.99 of the best Q any run has found (docs/iterOptimize/best-ever.csv, kept
   # by hand: long runs, other methods, earlier studies), or of this study's best if higher.

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <stdexcept>
 
 #include "passageMesh/optimize/Optimizer.hpp"
@@ -151,6 +152,11 @@ TEST(Optimizer, RejectsBadInput) {
   options.budget = 0;
   EXPECT_THROW(optimize(problem.box, objective, options), std::invalid_argument);
   options.budget = 10;
+  for (double share : {-0.1, 1.5, std::nan("")}) {
+    options.patternSearchShare = share;
+    EXPECT_THROW(optimize(problem.box, objective, options), std::invalid_argument) << share;
+  }
+  options.patternSearchShare = 0.15;
   options.start = problem.box.upper * 2;
   EXPECT_THROW(optimize(problem.box, objective, options), std::invalid_argument);
   options.start.reset();
@@ -162,7 +168,7 @@ TEST(Optimizer, RejectsBadInput) {
   EXPECT_THROW(optimize(problem.box, wrongSize, options), std::runtime_error);
 }
 
-TEST(Optimizer, CmaEsHandsTheObjectiveWholePopulations) {
+TEST(Optimizer, CmaEsHandsTheObjectiveWholePopulationsThenSinglePatternSearchPoints) {
   const SyntheticProblem problem = shiftedBowl();
   std::vector<std::size_t> batchSizes;
   const BatchObjective objective = [&](const std::vector<Eigen::VectorXd>& points) {
@@ -171,11 +177,51 @@ TEST(Optimizer, CmaEsHandsTheObjectiveWholePopulations) {
   };
   OptimizerOptions options;
   options.budget = 95;
+  options.patternSearchShare = 0;  // CMA-ES to the end
   optimize(problem.box, objective, options);
   ASSERT_EQ(batchSizes.size(), 11u);
   EXPECT_EQ(batchSizes[0], 1u);       // the start point
   EXPECT_EQ(batchSizes[1], 10u);      // 4 + floor(3 ln 8)
   EXPECT_EQ(batchSizes.back(), 4u);   // cut to the budget left
+
+  batchSizes.clear();
+  options.patternSearchShare = 0.15;  // the default: 14 of 95 kept for the pattern search
+  optimize(problem.box, objective, options);
+  ASSERT_EQ(batchSizes.size(), 1u + 8u + 14u);
+  for (std::size_t b = 1; b <= 8; ++b) EXPECT_EQ(batchSizes[b], 10u);
+  for (std::size_t b = 9; b < batchSizes.size(); ++b) EXPECT_EQ(batchSizes[b], 1u);
+}
+
+// The mesh quality rises towards the edges where a rounded node count changes and drops
+// past them (docs/optimization.md). Here: a slope in the unit cube up to a plane, a drop
+// of 1 beyond it. The pattern search with nearly all the budget must climb from near the
+// box centre to the edge, and CMA-ES with its final pattern search must not step past.
+TEST(Optimizer, PatternSearchClimbsToTheEdgeOfAJump) {
+  const BoxProblem box = shiftedBowl().box;
+  constexpr double edge = 0.6;
+  const PointObjective slopeToEdge = [&box](const Eigen::VectorXd& x) {
+    const double height = box.toUnit(x).mean();  // 0.5 at the centre
+    return height <= edge ? height : height - 1;
+  };
+  OptimizerOptions options;
+  options.budget = 400;
+  options.patternSearchShare = 1;  // all but the start and one population
+  const auto alone = optimize(box, evaluateInParallel(slopeToEdge, 1), options);
+  // CMA-ES's first population (10) comes first; the pattern search runs until its steps
+  // shrink below 1e-7 without a gain, and CMA-ES then gets what is left.
+  EXPECT_GT(alone.patternSearchEvaluations, 100);
+  EXPECT_LE(alone.patternSearchEvaluations, 389);
+  EXPECT_GE(alone.restarts, 1);
+  EXPECT_NEAR(alone.bestValue, edge, 1e-6);
+  EXPECT_EQ(alone.best[5], std::round(alone.best[5])) << "nT is integer";
+
+  options.patternSearchShare = 0.15;
+  const auto both = optimize(box, evaluateInParallel(slopeToEdge, 1), options);
+  // 60 kept, and what was left of a population that did not fit: 10 at most.
+  EXPECT_GE(both.patternSearchEvaluations, 60);
+  EXPECT_LT(both.patternSearchEvaluations, 70);
+  EXPECT_LE(both.bestValue, edge);
+  EXPECT_NEAR(both.bestValue, edge, 1e-4);
 }
 
 // The synthetic objectives themselves: maximum 1 at the optimum, less around it, and the

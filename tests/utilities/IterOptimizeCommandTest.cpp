@@ -158,9 +158,11 @@ TEST(IterOptimizeCommand, WritesTheBestParametersAndTheHistory) {
   ASSERT_EQ(h.rows.size(), 12u);
   const std::size_t best = expectRunningBest(h);
 
-  // The first evaluation is the start, the case's meshDict, and its Q is the mesh's.
+  // The first evaluation is the start, the case's meshDict (now kept as the .orig), and
+  // its Q is the mesh's.
   PassageCase input = readPassageCase(dir, "test");
-  const MeshingParameters start = input.parameters;
+  const MeshingParameters start =
+      readMeshDict(dir / "system" / "meshDict.xml.orig", input.blade.parameters().chord);
   expectSameParameters(parametersOf(h.rows[0]), start);
   EXPECT_EQ(h.rows[0][qColumn], meshQualityOf(input, start));
   EXPECT_GT(h.rows[0][qColumn], 0.2);

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/CommandLine.hpp"
@@ -54,10 +55,14 @@ OptimizerOptions optimizerOptions(const po::variables_map& values) {
 }
 
 void printBest(const MeshingOptimization& run) {
-  std::printf("iterOptimize: %ld evaluations (%d %s of %s); start Q %.17g, best Q %.17g "
+  const std::string patternSearch =
+      run.result.patternSearchEvaluations > 0
+          ? ", " + std::to_string(run.result.patternSearchEvaluations) + " of them by the final pattern search"
+          : "";
+  std::printf("iterOptimize: %ld evaluations (%d %s of %s%s); start Q %.17g, best Q %.17g "
               "(evaluation %ld)\n  best meshing parameters (yIn, yOut in metres):\n",
               run.result.evaluations, run.result.restarts, run.result.restarts == 1 ? "start" : "starts",
-              run.result.method.c_str(),
+              run.result.method.c_str(), patternSearch.c_str(),
               run.startQuality(), run.result.bestValue, run.bestEvaluation());
   const auto& names = MeshingParameters::names();
   const auto values = run.best.toArray();

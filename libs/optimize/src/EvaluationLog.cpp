@@ -73,6 +73,7 @@ OptimizationResult EvaluationLog::result(const std::string& method, int restarts
   r.method = method;
   r.evaluations = static_cast<long>(history_.size());
   r.restarts = restarts;
+  r.patternSearchEvaluations = patternSearchEvaluations_;
   r.stopped = stopped_ && remaining() > 0;
   r.history = history_;
   r.bestValue = bestValue();

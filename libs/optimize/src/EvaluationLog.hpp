@@ -42,6 +42,9 @@ class EvaluationLog {
   // empty before the first evaluation.
   Eigen::VectorXd bestUnitPoint() const;
 
+  // Evaluations made by a final pattern search (CMA-ES), reported in the result.
+  void countPatternSearch(long evaluations) { patternSearchEvaluations_ += evaluations; }
+
   OptimizationResult result(const std::string& method, int restarts) const;
 
  private:
@@ -51,6 +54,7 @@ class EvaluationLog {
   OptimizationHistory history_;
   long bestIndex_ = -1;
   bool stopped_ = false;
+  long patternSearchEvaluations_ = 0;
 };
 
 // Splits a seed into independent seeds for restarts or streams (splitmix64).

@@ -27,6 +27,8 @@ OptimizationResult optimize(const BoxProblem& problem, const BatchObjective& obj
     throw std::invalid_argument("optimize: unknown method '" + options.method + "' (known: " + known + ")");
   }
   if (options.budget < 1) throw std::invalid_argument("optimize: the budget must be at least 1 evaluation");
+  if (!(options.patternSearchShare >= 0 && options.patternSearchShare <= 1))
+    throw std::invalid_argument("optimize: patternSearchShare must be in [0, 1]");
   if (options.start) {
     const Eigen::VectorXd& s = *options.start;
     if (s.size() != problem.dimension() || (s.array() < problem.lower.array()).any() ||
