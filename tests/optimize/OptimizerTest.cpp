@@ -224,6 +224,32 @@ TEST(Optimizer, PatternSearchClimbsToTheEdgeOfAJump) {
   EXPECT_NEAR(both.bestValue, edge, 1e-4);
 }
 
+// An integer dimension whose bounds are not integers (101..110 inside [100.5, 110.4]),
+// searched almost wholly by the pattern search: it finds the best integer, and every
+// value the objective sees is one of those integers.
+TEST(Optimizer, PatternSearchStepsOnTheIntegersOfABoxWithNonIntegerBounds) {
+  BoxProblem box;
+  box.lower = Eigen::Vector2d(0, 100.5);
+  box.upper = Eigen::Vector2d(1, 110.4);
+  box.integer = {false, true};
+  std::vector<double> seen;
+  const PointObjective peakAt107 = [&seen](const Eigen::VectorXd& x) {
+    seen.push_back(x[1]);
+    return -std::abs(x[1] - 107) - (x[0] - 0.3) * (x[0] - 0.3);
+  };
+  OptimizerOptions options;
+  options.budget = 100;
+  options.patternSearchShare = 1;
+  const auto r = optimize(box, evaluateInParallel(peakAt107, 1), options);
+  EXPECT_EQ(r.best[1], 107);
+  EXPECT_NEAR(r.best[0], 0.3, 1e-3);
+  for (double n : seen) {
+    EXPECT_EQ(n, std::round(n));
+    EXPECT_GE(n, 101);
+    EXPECT_LE(n, 110);
+  }
+}
+
 // The synthetic objectives themselves: maximum 1 at the optimum, less around it, and the
 // narrow tube valid along its axis only.
 TEST(SyntheticObjectives, MaximumOneAtTheOptimumAndTheTubeIsNarrow) {
