@@ -21,15 +21,11 @@ class PatternSearch {
  public:
   PatternSearch(EvaluationLog& log, double initialStep)
       : log_(log), best_(log.bestUnitPoint()), bestValue_(log.bestValue()),
-        step_(best_.size()), unit_(best_.size()), firstInteger_(best_.size()), lastInteger_(best_.size()) {
+        step_(best_.size()), unit_(best_.size()) {
     const BoxProblem& box = log.problem();
     for (int k = 0; k < box.dimension(); ++k) {
-      // An integer dimension moves by whole integers, at least one, between the box's
-      // first and last integers (unit-cube coordinates).
-      const double range = box.upper[k] - box.lower[k];
-      unit_[k] = box.isInteger(k) ? 1 / range : 0.0;
-      firstInteger_[k] = box.isInteger(k) ? (std::ceil(box.lower[k]) - box.lower[k]) / range : 0.0;
-      lastInteger_[k] = box.isInteger(k) ? (std::floor(box.upper[k]) - box.lower[k]) / range : 1.0;
+      // An integer dimension moves by whole integers, at least one (unit-cube lengths).
+      unit_[k] = box.isInteger(k) ? 1 / (box.upper[k] - box.lower[k]) : 0.0;
       step_[k] = box.isInteger(k) ? unit_[k] * std::max(1.0, std::round(initialStep / unit_[k]))
                                   : initialStep;
     }
@@ -73,16 +69,12 @@ class PatternSearch {
     return false;
   }
 
-  // Evaluates a point (clipped into the cube, integer dimensions on their grid) and keeps
-  // it if it beats the best; a point equal to the best is not evaluated again.
-  bool tryPoint(Eigen::VectorXd trial) {
+  // Evaluates a point and keeps it if it beats the best. The point is first moved to what
+  // the objective would see (clipped into the box, integer dimensions rounded), in the
+  // form bestUnitPoint gives, so a point equal to the best is not evaluated again.
+  bool tryPoint(const Eigen::VectorXd& unitPoint) {
     if (log_.finished()) return false;
-    for (int k = 0; k < trial.size(); ++k) {
-      trial[k] = std::clamp(trial[k], 0.0, 1.0);
-      if (unit_[k] > 0)
-        trial[k] = std::clamp(firstInteger_[k] + std::round((trial[k] - firstInteger_[k]) / unit_[k]) * unit_[k],
-                              firstInteger_[k], lastInteger_[k]);
-    }
+    const Eigen::VectorXd trial = log_.problem().toUnit(log_.evaluatedPoint(unitPoint));
     if (trial == best_) return false;
     const std::vector<double> value = log_.evaluate({trial});
     if (value.empty() || !(value[0] > bestValue_)) return false;
@@ -110,7 +102,7 @@ class PatternSearch {
   EvaluationLog& log_;
   Eigen::VectorXd best_;
   double bestValue_;
-  Eigen::VectorXd step_, unit_, firstInteger_, lastInteger_;
+  Eigen::VectorXd step_, unit_;
 };
 
 }  // namespace

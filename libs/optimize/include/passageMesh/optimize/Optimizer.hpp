@@ -70,7 +70,8 @@ struct OptimizationResult {
 const std::vector<std::string>& optimizerMethods();
 
 // Throws std::invalid_argument for an unknown method, a bad box, budget < 1, a
-// patternSearchShare outside [0, 1] or a start point outside the box; exceptions from the objective pass through.
+// patternSearchShare outside [0, 1] or a start point outside the box; exceptions from
+// the objective pass through.
 OptimizationResult optimize(const BoxProblem& problem, const BatchObjective& objective,
                             const OptimizerOptions& options);
 
