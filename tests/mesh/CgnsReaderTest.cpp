@@ -1,6 +1,6 @@
 // readCgns gives back what writeCgns wrote: the same nodes, connections (periodic
 // translations included) and patches; missing or broken files are input errors.
-#include "passageMesh/mesh/CgnsReader.hpp"
+#include "passageMesh/structured/CgnsReader.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 #include "../blade/BladeTestData.hpp"
 #include "../passage/PassageTestData.hpp"
 #include "passageMesh/core/InputError.hpp"
-#include "passageMesh/mesh/CgnsWriter.hpp"
 #include "passageMesh/mesh/HohMesh.hpp"
+#include "passageMesh/structured/CgnsWriter.hpp"
 
 using namespace passageMesh;
 

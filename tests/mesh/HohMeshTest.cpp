@@ -6,9 +6,9 @@
 
 #include "../blade/BladeTestData.hpp"
 #include "../passage/PassageTestData.hpp"
-#include "passageMesh/mesh/CgnsWriter.hpp"
 #include "passageMesh/mesh/OuterLoop.hpp"
 #include "passageMesh/passage/PassageBoundary.hpp"
+#include "passageMesh/structured/CgnsWriter.hpp"
 
 using namespace passageMesh;
 

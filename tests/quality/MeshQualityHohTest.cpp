@@ -8,9 +8,9 @@
 
 #include "QualityTestData.hpp"
 #include "../TestFiles.hpp"
-#include "passageMesh/mesh/CgnsReader.hpp"
-#include "passageMesh/mesh/CgnsWriter.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
+#include "passageMesh/structured/CgnsReader.hpp"
+#include "passageMesh/structured/CgnsWriter.hpp"
 
 using namespace passageMesh;
 using namespace passageMesh::testData;

@@ -6,8 +6,8 @@
 
 #include "../quality/QualityTestData.hpp"
 #include "UtilityTestSupport.hpp"
-#include "passageMesh/mesh/CgnsWriter.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
+#include "passageMesh/structured/CgnsWriter.hpp"
 
 using namespace passageMesh;
 using namespace passageMesh::testData;

@@ -13,10 +13,10 @@
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/core/InputError.hpp"
-#include "passageMesh/mesh/CgnsReader.hpp"
-#include "passageMesh/mesh/VtkWriter.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
 #include "passageMesh/quality/MeshQualityReport.hpp"
+#include "passageMesh/structured/CgnsReader.hpp"
+#include "passageMesh/structured/VtkWriter.hpp"
 
 using namespace passageMesh;
 

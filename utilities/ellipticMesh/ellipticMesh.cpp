@@ -8,11 +8,11 @@
 
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/CommandLine.hpp"
-#include "passageMesh/mesh/CgnsWriter.hpp"
 #include "passageMesh/mesh/HohMesh.hpp"
 #include "passageMesh/mesh/MeshStatistics.hpp"
-#include "passageMesh/mesh/VtkWriter.hpp"
 #include "passageMesh/passage/PassageCase.hpp"
+#include "passageMesh/structured/CgnsWriter.hpp"
+#include "passageMesh/structured/VtkWriter.hpp"
 
 using namespace passageMesh;
 

@@ -21,7 +21,7 @@
 // kinks (where a camber-following periodic boundary meets the straight outlet part).
 // The full grid is then solved with the control functions fixed, by FAS multigrid
 // (ThompsonMultigrid.hpp), or by single-grid line relaxation.
-#include "passageMesh/mesh/StructuredMesh.hpp"
+#include "passageMesh/structured/StructuredMesh.hpp"
 #include "passageMesh/mesh/ThompsonSolver.hpp"
 
 namespace passageMesh {

@@ -6,7 +6,7 @@
 // the coarse grid too. Coarse node (I, J) is fine node (fineI(I), fineRowOf[J]).
 #include <vector>
 
-#include "passageMesh/mesh/StructuredMesh.hpp"
+#include "passageMesh/structured/StructuredMesh.hpp"
 #include "passageMesh/mesh/ThompsonSolver.hpp"
 
 namespace passageMesh {

@@ -19,7 +19,7 @@
 #include "passageMesh/mesh/EllipticSmoother.hpp"
 
 #include "passageMesh/blade/BladeShape.hpp"
-#include "passageMesh/mesh/StructuredMesh.hpp"
+#include "passageMesh/structured/StructuredMesh.hpp"
 #include "passageMesh/passage/MeshingParameters.hpp"
 #include "passageMesh/passage/PassageCondition.hpp"
 

@@ -2,7 +2,7 @@
 // What ellipticMesh reports about a mesh, and what the tests hold it to (issue 3): the wall
 // layer of the O-block against the requested first cell height and orthogonality, and the
 // uniformity of the H-blocks.
-#include "passageMesh/mesh/StructuredMesh.hpp"
+#include "passageMesh/structured/StructuredMesh.hpp"
 
 namespace passageMesh {
 

@@ -10,7 +10,7 @@
 // Single-grid line relaxation converges at about 0.99 per sweep on the tutorials' 300 x 100
 // O-blocks (the slow mode runs around the blade); the V-cycle removes that mode on the
 // coarse grids (docs/elliptic-smoothing.md has the measured rates).
-#include "passageMesh/mesh/StructuredMesh.hpp"
+#include "passageMesh/structured/StructuredMesh.hpp"
 #include "passageMesh/mesh/ThompsonSolver.hpp"
 
 namespace passageMesh {

@@ -19,7 +19,7 @@
 #include <functional>
 #include <vector>
 
-#include "passageMesh/mesh/StructuredMesh.hpp"
+#include "passageMesh/structured/StructuredMesh.hpp"
 
 namespace passageMesh {
 

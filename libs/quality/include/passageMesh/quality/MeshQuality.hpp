@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "passageMesh/mesh/StructuredMesh.hpp"
 #include "passageMesh/quality/OBlockNeighbours.hpp"
+#include "passageMesh/structured/StructuredMesh.hpp"
 
 namespace passageMesh {
 

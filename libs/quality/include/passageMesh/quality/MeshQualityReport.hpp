@@ -3,8 +3,8 @@
 // docs/case-format.md) and a one-screen summary for the terminal.
 #include <string>
 
-#include "passageMesh/mesh/StructuredMesh.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
+#include "passageMesh/structured/StructuredMesh.hpp"
 
 namespace passageMesh {
 

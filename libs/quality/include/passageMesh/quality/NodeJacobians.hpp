@@ -7,7 +7,7 @@
 // (first-order (f[1] - f[0]) when the block has only two nodes in that direction).
 #include <cstdint>
 
-#include "passageMesh/mesh/StructuredMesh.hpp"
+#include "passageMesh/structured/StructuredMesh.hpp"
 
 namespace passageMesh {
 

@@ -13,7 +13,7 @@
 //   segment) or to none (a physical boundary) has no ghost: one-sided differences.
 #include <vector>
 
-#include "passageMesh/mesh/StructuredMesh.hpp"
+#include "passageMesh/structured/StructuredMesh.hpp"
 
 namespace passageMesh {
 

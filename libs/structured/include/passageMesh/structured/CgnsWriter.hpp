@@ -20,7 +20,7 @@
 // type; a second patch of that name in the same zone is written as "name_2", etc.
 #include <filesystem>
 
-#include "passageMesh/mesh/StructuredMesh.hpp"
+#include "passageMesh/structured/StructuredMesh.hpp"
 
 namespace passageMesh {
 

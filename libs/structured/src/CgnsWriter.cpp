@@ -1,4 +1,4 @@
-#include "passageMesh/mesh/CgnsWriter.hpp"
+#include "passageMesh/structured/CgnsWriter.hpp"
 
 #include <cgnslib.h>
 #include <unistd.h>

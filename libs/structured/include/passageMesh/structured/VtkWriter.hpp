@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "passageMesh/mesh/StructuredMesh.hpp"
+#include "passageMesh/structured/StructuredMesh.hpp"
 
 namespace passageMesh {
 

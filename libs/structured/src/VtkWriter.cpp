@@ -1,4 +1,4 @@
-#include "passageMesh/mesh/VtkWriter.hpp"
+#include "passageMesh/structured/VtkWriter.hpp"
 
 #include <cmath>
 #include <set>

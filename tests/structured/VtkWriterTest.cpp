@@ -6,7 +6,7 @@
 #include <limits>
 #include <sstream>
 
-#include "passageMesh/mesh/VtkWriter.hpp"
+#include "passageMesh/structured/VtkWriter.hpp"
 
 using namespace passageMesh;
 
@@ -14,7 +14,7 @@ namespace {
 
 std::filesystem::path freshDir(const std::string& name) {
   const auto dir =
-      std::filesystem::path(PASSAGEMESH_BINARY_DIR) / "tests" / "meshTestOutput" / name;
+      std::filesystem::path(PASSAGEMESH_BINARY_DIR) / "tests" / "structuredTestOutput" / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

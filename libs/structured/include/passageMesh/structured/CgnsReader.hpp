@@ -18,7 +18,7 @@
 // The result passes validateStructuredMesh.
 #include <filesystem>
 
-#include "passageMesh/mesh/StructuredMesh.hpp"
+#include "passageMesh/structured/StructuredMesh.hpp"
 
 namespace passageMesh {
 

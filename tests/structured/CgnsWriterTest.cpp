@@ -8,7 +8,7 @@
 #include <limits>
 #include <sstream>
 
-#include "passageMesh/mesh/CgnsWriter.hpp"
+#include "passageMesh/structured/CgnsWriter.hpp"
 
 using namespace passageMesh;
 
@@ -17,7 +17,8 @@ namespace {
 constexpr double pitch = 0.3;  // not exact in binary, so exactness checks mean something
 
 std::filesystem::path testDir() {
-  const auto dir = std::filesystem::path(PASSAGEMESH_BINARY_DIR) / "tests" / "meshTestOutput";
+  const auto dir =
+      std::filesystem::path(PASSAGEMESH_BINARY_DIR) / "tests" / "structuredTestOutput";
   std::filesystem::create_directories(dir);
   return dir;
 }

@@ -1,4 +1,4 @@
-#include "passageMesh/mesh/CgnsReader.hpp"
+#include "passageMesh/structured/CgnsReader.hpp"
 
 #include <cgns_io.h>
 #include <cgnslib.h>
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "passageMesh/core/InputError.hpp"
-#include "passageMesh/mesh/CgnsWriter.hpp"
+#include "passageMesh/structured/CgnsWriter.hpp"
 
 namespace passageMesh {
 namespace {
