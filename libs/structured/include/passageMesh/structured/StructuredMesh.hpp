@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace passageMesh {
@@ -53,6 +54,11 @@ struct StructuredMesh {
   std::vector<StructuredBlock> blocks;
   std::vector<BlockConnection> connections;
   std::vector<BoundaryPatch> patches;
+
+  // The (first) block named `name`; throws std::invalid_argument naming it when there is
+  // none. Connections and patches still refer to blocks by index.
+  StructuredBlock& block(std::string_view name);
+  const StructuredBlock& block(std::string_view name) const;
 };
 
 // True when no node of any block has an infinite or NaN coordinate.
