@@ -89,29 +89,7 @@ std::string periodicBoundaryCrossing(const PassageBoundary& boundary,
   return "";
 }
 
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
 }  // namespace
-
-std::string findInvalidCell(const StructuredMesh& mesh) {
-  for (const auto& block : mesh.blocks)
-    for (int j = 0; j + 1 < block.nj; ++j)
-      for (int i = 0; i + 1 < block.ni; ++i) {
-        const Eigen::Vector2d c[4] = {{block.xAt(i, j), block.yAt(i, j)},
-                                      {block.xAt(i + 1, j), block.yAt(i + 1, j)},
-                                      {block.xAt(i + 1, j + 1), block.yAt(i + 1, j + 1)},
-                                      {block.xAt(i, j + 1), block.yAt(i, j + 1)}};
-        for (int k = 0; k < 4; ++k) {
-          const double corner = cross(c[(k + 1) % 4] - c[k], c[(k + 3) % 4] - c[k]);
-          if (!(corner > 0))
-            return block.name + " cell (" + std::to_string(i) + ", " + std::to_string(j) +
-                   ") is folded or degenerate";
-        }
-      }
-  return "";
-}
 
 HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
                      const MeshingParameters& parameters, const HohMeshOptions& options) {

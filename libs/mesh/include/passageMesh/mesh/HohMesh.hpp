@@ -19,6 +19,7 @@
 #include "passageMesh/mesh/EllipticSmoother.hpp"
 
 #include "passageMesh/blade/BladeShape.hpp"
+#include "passageMesh/structured/CellValidity.hpp"  // findInvalidCell
 #include "passageMesh/structured/StructuredMesh.hpp"
 #include "passageMesh/passage/MeshingParameters.hpp"
 #include "passageMesh/passage/PassageCondition.hpp"
@@ -42,9 +43,5 @@ struct HohMesh {
 // a geometry that gives a folded or degenerate mesh returns valid = false with the reason.
 HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
                      const MeshingParameters& parameters, const HohMeshOptions& options = {});
-
-// The first cell (block, i, j) with non-positive area or a non-convex corner, as text;
-// empty when there is none.
-std::string findInvalidCell(const StructuredMesh& mesh);
 
 }  // namespace passageMesh

@@ -2,17 +2,15 @@
 // The two measures of one quadrilateral cell (method.md section 5), inline because
 // computeMeshQuality evaluates them for every cell of every mesh an optimiser tries.
 //
-// Corners are given counterclockwise in index space: (i, j), (i + 1, j), (i + 1, j + 1),
-// (i, j + 1) of the cell whose lowest node is (i, j); in a right-handed block (every
-// block of a valid HOH mesh) they then run counterclockwise in space too.
+// Corners are given counterclockwise in index space, as for cellIsValid
+// (passageMesh/structured/CellValidity.hpp).
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numbers>
 
-namespace passageMesh {
+#include "passageMesh/structured/CellValidity.hpp"
 
-using CellCorners = std::array<double, 4>;
+namespace passageMesh {
 
 // Q_J = min / max of the node Jacobians at the four corners.
 inline double jacobianRatio(const CellCorners& cornerJ) {
@@ -22,7 +20,7 @@ inline double jacobianRatio(const CellCorners& cornerJ) {
 }
 
 // The shape of a cell from its corners: the skewness quality and whether every corner is
-// convex with positive area (a folded, inverted or degenerate cell is not).
+// convex with positive area (cellIsValid: a folded, inverted or degenerate cell is not).
 struct CellShape {
   double skewQuality = 0;  // Q_S
   bool convex = false;
@@ -39,18 +37,15 @@ inline CellShape cellShape(const CellCorners& x, const CellCorners& y) {
     length2[k] = ex[k] * ex[k] + ey[k] * ey[k];
   }
   double cosMax = -1, cosMin = 1;
-  bool convex = true;
   for (int k = 0; k < 4; ++k) {
     const int previous = (k + 3) % 4;  // corner k joins edge `previous` (arriving) and edge k
-    const double cross = ex[previous] * ey[k] - ey[previous] * ex[k];
     const double cosine = -(ex[previous] * ex[k] + ey[previous] * ey[k]) /
                           std::sqrt(length2[previous] * length2[k]);
-    convex = convex && cross > 0;  // also false for NaN
     cosMax = std::max(cosMax, cosine);
     cosMin = std::min(cosMin, cosine);
   }
   const double deviation = std::clamp(std::max(cosMax, -cosMin), -1.0, 1.0);
-  return {1 - std::asin(deviation) * (2 / std::numbers::pi), convex};
+  return {1 - std::asin(deviation) * (2 / std::numbers::pi), cellIsValid(x, y)};
 }
 
 }  // namespace passageMesh

@@ -1,0 +1,18 @@
+#include "passageMesh/structured/CellValidity.hpp"
+
+namespace passageMesh {
+
+std::string findInvalidCell(const StructuredMesh& mesh) {
+  CellCorners x, y;
+  for (const auto& block : mesh.blocks)
+    for (int j = 0; j + 1 < block.nj; ++j)
+      for (int i = 0; i + 1 < block.ni; ++i) {
+        cellCorners(block, i, j, x, y);
+        if (!cellIsValid(x, y))
+          return block.name + " cell (" + std::to_string(i) + ", " + std::to_string(j) +
+                 ") is folded or degenerate";
+      }
+  return "";
+}
+
+}  // namespace passageMesh

@@ -1,0 +1,52 @@
+#include "passageMesh/structured/CellValidity.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace passageMesh;
+
+namespace {
+
+StructuredBlock unitSquares(int ni, int nj) {
+  StructuredBlock b;
+  b.name = "B";
+  b.ni = ni;
+  b.nj = nj;
+  for (int j = 0; j < nj; ++j)
+    for (int i = 0; i < ni; ++i) {
+      b.x.push_back(i);
+      b.y.push_back(j);
+    }
+  return b;
+}
+
+}  // namespace
+
+TEST(CellValidity, ConvexCounterclockwiseCellsAreValid) {
+  EXPECT_TRUE(cellIsValid({0, 1, 1, 0}, {0, 0, 1, 1}));
+  EXPECT_TRUE(cellIsValid({0, 2, 1.5, 0.2}, {0, 0.1, 1, 0.8}));  // a general quadrilateral
+}
+
+TEST(CellValidity, FoldedInvertedDegenerateAndNonConvexCellsAreNot) {
+  EXPECT_FALSE(cellIsValid({0, 1, 0, 1}, {0, 0, 1, 1}));      // bow tie
+  EXPECT_FALSE(cellIsValid({0, 0, 1, 1}, {0, 1, 1, 0}));      // clockwise: inverted
+  EXPECT_FALSE(cellIsValid({0, 1, 2, 0}, {0, 0, 0, 1}));      // straight corner: degenerate
+  EXPECT_FALSE(cellIsValid({0, 1, 0.2, 0}, {0, 0, 0.2, 1}));  // a reflex corner
+  EXPECT_FALSE(cellIsValid({0, 1, 1, 0}, {0, 0, 0, 0}));      // zero area
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(cellIsValid({0, 1, nan, 0}, {0, 0, 1, 1}));
+}
+
+TEST(CellValidity, FindsTheFirstInvalidCellByBlockRowAndColumn) {
+  StructuredMesh mesh;
+  mesh.blocks = {unitSquares(4, 3), unitSquares(3, 3)};
+  mesh.blocks[1].name = "C";
+  EXPECT_EQ(findInvalidCell(mesh), "");
+  mesh.blocks[1].xAt(2, 1) = -1;  // folds cells (1, 0) and (1, 1) of block C
+  EXPECT_EQ(findInvalidCell(mesh), "C cell (1, 0) is folded or degenerate");
+  mesh.blocks[0].yAt(3, 2) = 0.5;  // pulls a corner of cell (2, 1) of block B across it
+  mesh.blocks[0].xAt(3, 2) = 1.5;
+  EXPECT_EQ(findInvalidCell(mesh), "B cell (2, 1) is folded or degenerate");
+}
