@@ -1,7 +1,8 @@
 #pragma once
 // What ellipticMesh reports about a mesh, and what the tests hold it to (issue 3): the wall
 // layer of the O-block against the requested first cell height and orthogonality, and the
-// uniformity of the H-blocks.
+// uniformity of the H-blocks (blockNonUniformity, in libs/structured).
+#include "passageMesh/structured/BlockUniformity.hpp"  // blockNonUniformity
 #include "passageMesh/structured/StructuredMesh.hpp"
 
 namespace passageMesh {
@@ -20,9 +21,5 @@ struct WallLayerStatistics {
 
 // `oBlock`: i around the blade with the seam repeated (ni = nT + 1), j = 0 on the wall.
 WallLayerStatistics wallLayerStatistics(const StructuredBlock& oBlock, double firstCellHeight);
-
-// Largest relative deviation of any cell edge of the block from the mean edge length in
-// its direction (0 for a perfectly uniform block).
-double blockNonUniformity(const StructuredBlock& block);
 
 }  // namespace passageMesh
