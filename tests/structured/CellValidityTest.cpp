@@ -5,24 +5,10 @@
 #include <cmath>
 #include <limits>
 
+#include "StructuredTestData.hpp"
+
 using namespace passageMesh;
-
-namespace {
-
-StructuredBlock unitSquares(int ni, int nj) {
-  StructuredBlock b;
-  b.name = "B";
-  b.ni = ni;
-  b.nj = nj;
-  for (int j = 0; j < nj; ++j)
-    for (int i = 0; i < ni; ++i) {
-      b.x.push_back(i);
-      b.y.push_back(j);
-    }
-  return b;
-}
-
-}  // namespace
+using testData::uniformBlock;
 
 TEST(CellValidity, ConvexCounterclockwiseCellsAreValid) {
   EXPECT_TRUE(cellIsValid({0, 1, 1, 0}, {0, 0, 1, 1}));
@@ -41,8 +27,7 @@ TEST(CellValidity, FoldedInvertedDegenerateAndNonConvexCellsAreNot) {
 
 TEST(CellValidity, FindsTheFirstInvalidCellByBlockRowAndColumn) {
   StructuredMesh mesh;
-  mesh.blocks = {unitSquares(4, 3), unitSquares(3, 3)};
-  mesh.blocks[1].name = "C";
+  mesh.blocks = {uniformBlock("B", 4, 3), uniformBlock("C", 3, 3)};
   EXPECT_EQ(findInvalidCell(mesh), "");
   mesh.blocks[1].xAt(2, 1) = -1;  // folds cells (1, 0) and (1, 1) of block C
   EXPECT_EQ(findInvalidCell(mesh), "C cell (1, 0) is folded or degenerate");
