@@ -29,8 +29,10 @@ void writeText(const fs::path& file, const std::string& content) {
 
 std::vector<ExportFormat> parseExportFormats(const std::string& list) {
   std::vector<ExportFormat> formats;
-  std::stringstream names(list);
+  // A trailing comma would end getline's split silently: refuse it as an empty name.
+  std::stringstream names(list + (list.empty() || list.back() == ',' ? "," : ""));
   for (std::string name; std::getline(names, name, ',');) {
+    if (name.empty()) throw InputError("-format: an empty format name in '" + list + "'");
     ExportFormat f;
     if (name == "foam") f = ExportFormat::foam;
     else if (name == "plot3d") f = ExportFormat::plot3d;
