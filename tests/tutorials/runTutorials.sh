@@ -19,5 +19,14 @@ for blade in LS89 STD10 T106A SIRT; do
   if grep -Eiq "warning|error" <<< "$report"; then
     echo "$blade: cgnscheck complains:"; echo "$report"; exit 1
   fi
+  report="$(cgnscheck "$work/tutorials/$blade/mesh/passageSU2.cgns" 2>&1)"
+  if grep -Eiq "warning|error" <<< "$report"; then
+    echo "$blade: cgnscheck complains about passageSU2.cgns:"; echo "$report"; exit 1
+  fi
+  # The exported polyMesh through OpenFOAM's checkMesh (skipped where OpenFOAM is absent).
+  status=0
+  "$source/tests/tutorials/checkFoamMesh.sh" "$work/tutorials/$blade" > "$work/checkMesh.out" || status=$?
+  if [ "$status" = 1 ]; then echo "$blade: checkMesh fails:"; cat "$work/checkMesh.out"; exit 1; fi
+  sed "s/^/$blade: /" "$work/checkMesh.out" | grep -E "Mesh OK|skipped|cells:"
   grep -m1 "Q = " "$work/tutorials/$blade/log.checkMeshQuality" | sed "s/^/$blade: /"
 done

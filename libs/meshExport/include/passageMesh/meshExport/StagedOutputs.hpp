@@ -1,0 +1,38 @@
+#pragma once
+// Several outputs, files or whole directories (an OpenFOAM polyMesh), that appear
+// together or not at all: each is written to a temporary beside its target, and only
+// when every one is complete are they moved into place. A failure before commit() leaves
+// every target as it was; the destructor removes what was staged and not committed.
+#include <filesystem>
+#include <utility>
+#include <vector>
+
+namespace passageMesh {
+
+class StagedOutputs {
+ public:
+  StagedOutputs() = default;
+  ~StagedOutputs();
+  StagedOutputs(const StagedOutputs&) = delete;
+  StagedOutputs& operator=(const StagedOutputs&) = delete;
+
+  // The temporary path to write `target` into (beside it: same file system, so the move
+  // is a rename); creates the target's parent directory. Throws std::runtime_error when it
+  // cannot, or when the target exists as a different kind (directory versus file) than
+  // `directory` says.
+  std::filesystem::path stage(const std::filesystem::path& target, bool directory);
+
+  // Moves every staged output over its target. A directory target is replaced whole: the
+  // old one is renamed aside, the new one renamed in, the old one removed. Throws
+  // std::runtime_error naming the target when a staged output is missing or a move fails.
+  void commit();
+
+ private:
+  struct Entry {
+    std::filesystem::path target, temporary;
+    bool directory = false;
+  };
+  std::vector<Entry> entries_;
+};
+
+}  // namespace passageMesh

@@ -1,0 +1,98 @@
+#include "passageMesh/meshExport/Su2Cgns.hpp"
+
+#include <cgnslib.h>
+
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "passageMesh/core/AtomicFile.hpp"
+
+namespace passageMesh {
+
+namespace {
+
+// An open CGNS file that is closed on every path out.
+class OpenCgns {
+ public:
+  explicit OpenCgns(const std::filesystem::path& file) : label_(file.string()) {
+    call(cg_open(label_.c_str(), CG_MODE_WRITE, &fn_), "open");
+  }
+  ~OpenCgns() { if (fn_ >= 0) cg_close(fn_); }
+  OpenCgns(const OpenCgns&) = delete;
+  OpenCgns& operator=(const OpenCgns&) = delete;
+  void call(int status, const std::string& what) const {
+    if (status != CG_OK) throw std::runtime_error(label_ + ": CGNS " + what + " failed: " + cg_get_error());
+  }
+  void close() {
+    const int f = fn_;
+    fn_ = -1;
+    call(cg_close(f), "close");
+  }
+  int fn() const { return fn_; }
+
+ private:
+  std::string label_;
+  int fn_ = -1;
+};
+
+}  // namespace
+
+void writeSu2Cgns(const UnstructuredPassage& passage, const std::filesystem::path& file) {
+  OpenCgns f(file);
+  int base = 0, zone = 0, coordinate = 0, section = 0;
+  f.call(cg_base_write(f.fn(), "Base", 2, 2, &base), "base");
+  f.call(cg_goto(f.fn(), base, "end"), "goto base");
+  f.call(cg_dataclass_write(CGNS_ENUMV(Dimensional)), "DataClass");
+  f.call(cg_units_write(CGNS_ENUMV(Kilogram), CGNS_ENUMV(Meter), CGNS_ENUMV(Second), CGNS_ENUMV(Kelvin),
+                        CGNS_ENUMV(Degree)), "units");
+  cgsize_t size[3] = {static_cast<cgsize_t>(passage.points.size()), static_cast<cgsize_t>(passage.cells.size()), 0};
+  f.call(cg_zone_write(f.fn(), base, "passage", size, CGNS_ENUMV(Unstructured), &zone), "zone");
+  for (int axis = 0; axis < 2; ++axis) {
+    std::vector<double> values;
+    for (const auto& p : passage.points) values.push_back(p[axis]);
+    const char* name = axis == 0 ? "CoordinateX" : "CoordinateY";
+    f.call(cg_coord_write(f.fn(), base, zone, CGNS_ENUMV(RealDouble), name, values.data(), &coordinate), name);
+    f.call(cg_goto(f.fn(), base, "Zone_t", zone, "GridCoordinates_t", 1, "DataArray_t", coordinate, "end"),
+           "goto coordinate");
+    const double lengthExponent[5] = {0, 1, 0, 0, 0};
+    f.call(cg_exponents_write(CGNS_ENUMV(RealDouble), lengthExponent), "exponents");
+  }
+  std::vector<cgsize_t> quads;
+  for (const auto& c : passage.cells)
+    for (const int p : c) quads.push_back(p + 1);  // CGNS numbers from 1
+  cgsize_t last = static_cast<cgsize_t>(passage.cells.size());
+  f.call(cg_section_write(f.fn(), base, zone, "cells", CGNS_ENUMV(QUAD_4), 1, last, 0, quads.data(), &section),
+         "section cells");
+  for (const EdgePatch& p : passage.patches) {
+    std::vector<cgsize_t> bars;
+    for (const MeshEdge& e : p.edges) {
+      bars.push_back(e.p0 + 1);
+      bars.push_back(e.p1 + 1);
+    }
+    const cgsize_t first = last + 1;
+    last += static_cast<cgsize_t>(p.edges.size());
+    f.call(cg_section_write(f.fn(), base, zone, p.name.c_str(), CGNS_ENUMV(BAR_2), first, last, 0, bars.data(),
+                            &section), "section " + p.name);
+  }
+  f.close();
+}
+
+std::string su2ConfigFragment(const UnstructuredPassage& passage, const std::string& meshFileName) {
+  std::ostringstream out;
+  const Eigen::Vector2d& t = passage.translation;
+  out << "% passageMesh exportMesh: mesh and markers of " << meshFileName << "\n"
+      << "MESH_FILENAME= " << meshFileName << "\nMESH_FORMAT= CGNS\n"
+      << "% periodic pair: translation from periodicLower to periodicUpper [m]\n"
+      << "MARKER_PERIODIC= ( periodicLower, periodicUpper, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, "
+      << formatExact(t.x()) << ", " << formatExact(t.y()) << ", 0.0 )\n"
+      << "% adiabatic blade wall\n";
+  for (const EdgePatch& p : passage.patches)
+    if (p.kind == EdgePatchKind::wall) out << "MARKER_HEATFLUX= ( " << p.name << ", 0.0 )\n";
+  out << "% complete with the flow conditions, e.g.\n"
+      << "% MARKER_INLET= ( inlet, T0, P0, dirX, dirY, 0.0 )\n"
+      << "% MARKER_OUTLET= ( outlet, P )\n";
+  return out.str();
+}
+
+}  // namespace passageMesh

@@ -1,0 +1,184 @@
+// The exporters' files: OpenFOAM polyMesh counts and ordering, Plot3D layout, the SU2
+// CGNS zone read back with the CGNS library, format lists and staged outputs.
+#include <cgnslib.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "../TestFiles.hpp"
+#include "../quality/QualityTestData.hpp"
+#include "passageMesh/core/AtomicFile.hpp"
+#include "passageMesh/core/InputError.hpp"
+#include "passageMesh/meshExport/FoamPolyMesh.hpp"
+#include "passageMesh/meshExport/MeshExport.hpp"
+#include "passageMesh/meshExport/Plot3dFile.hpp"
+#include "passageMesh/meshExport/StagedOutputs.hpp"
+#include "passageMesh/meshExport/Su2Cgns.hpp"
+
+using namespace passageMesh;
+using namespace passageMesh::testData;
+namespace fs = std::filesystem;
+
+namespace {
+
+// The list of an OpenFOAM file: its count and the items, one per line.
+std::vector<std::string> foamList(const std::string& content, int& count) {
+  std::istringstream in(content.substr(content.find("}\n\n") + 3));
+  in >> count;
+  std::string line;
+  std::getline(in, line);
+  std::getline(in, line);  // "("
+  std::vector<std::string> items;
+  while (std::getline(in, line) && line != ")") items.push_back(line);
+  return items;
+}
+
+std::string fileNamed(const std::vector<std::pair<std::string, std::string>>& files, const std::string& name) {
+  for (const auto& [n, c] : files)
+    if (n == name) return c;
+  return "";
+}
+
+}  // namespace
+
+TEST(FoamPolyMesh, CountsAndUpperTriangularOrder) {
+  const HohMesh hoh = validHohMesh();
+  const UnstructuredPassage p = makeUnstructuredPassage(hoh.mesh);
+  const auto files = foamPolyMeshFiles(p, 0.001);
+  ASSERT_EQ(files.size(), 5u);
+  int nPoints = 0, nFaces = 0, nOwners = 0, nNeighbours = 0, nPatches = 0;
+  const auto points = foamList(fileNamed(files, "points"), nPoints);
+  const auto faces = foamList(fileNamed(files, "faces"), nFaces);
+  const auto owners = foamList(fileNamed(files, "owner"), nOwners);
+  const auto neighbours = foamList(fileNamed(files, "neighbour"), nNeighbours);
+  EXPECT_EQ(nPoints, static_cast<int>(2 * p.points.size()));
+  EXPECT_EQ(static_cast<int>(points.size()), nPoints);
+  std::size_t boundary = 0;
+  for (const auto& e : p.patches) boundary += e.edges.size();
+  EXPECT_EQ(nFaces, static_cast<int>(p.internalEdges.size() + boundary + 2 * p.cells.size()));
+  EXPECT_EQ(static_cast<int>(faces.size()), nFaces);
+  EXPECT_EQ(nOwners, nFaces);
+  EXPECT_EQ(nNeighbours, static_cast<int>(p.internalEdges.size()));
+  for (int k = 0; k < nNeighbours; ++k) {
+    ASSERT_LT(std::stoi(owners[k]), std::stoi(neighbours[k]));
+    if (k > 0 && owners[k] == owners[k - 1]) ASSERT_LT(std::stoi(neighbours[k - 1]), std::stoi(neighbours[k]));
+  }
+  const std::string boundaryFile = fileNamed(files, "boundary");
+  foamList(boundaryFile, nPatches);
+  EXPECT_EQ(nPatches, 6);
+  for (const char* text : {"type            cyclic;", "neighbourPatch  periodicUpper;", "type            empty;",
+                           "type            wall;", "transform       translational;"})
+    EXPECT_NE(boundaryFile.find(text), std::string::npos) << text;
+  // 17 significant digits: the first point reads back exactly.
+  std::istringstream first(points[0].substr(1));
+  double x = 0;
+  first >> x;
+  EXPECT_EQ(x, p.points[0].x());
+}
+
+TEST(Plot3dFile, BlocksExtrudedOneCellThick) {
+  const HohMesh hoh = validHohMesh();
+  std::istringstream in(plot3dAscii(hoh.mesh, 0.5));
+  int blocks = 0;
+  in >> blocks;
+  ASSERT_EQ(blocks, 3);
+  std::vector<int> dims(9);
+  for (int& d : dims) in >> d;
+  std::size_t values = 0;
+  for (int b = 0; b < 3; ++b) {
+    EXPECT_EQ(dims[3 * b], hoh.mesh.blocks[b].ni);
+    EXPECT_EQ(dims[3 * b + 1], hoh.mesh.blocks[b].nj);
+    EXPECT_EQ(dims[3 * b + 2], 2);
+    values += 3u * 2u * static_cast<std::size_t>(dims[3 * b] * dims[3 * b + 1]);
+  }
+  double x0 = 0;
+  in >> x0;
+  EXPECT_EQ(x0, hoh.mesh.blocks[0].x[0]);
+  std::size_t read = 1;
+  for (double v; in >> v;) ++read;
+  EXPECT_EQ(read, values);
+}
+
+TEST(Su2Cgns, ZoneReadsBackWithSectionsAndConfig) {
+  const HohMesh hoh = validHohMesh();
+  const UnstructuredPassage p = makeUnstructuredPassage(hoh.mesh);
+  const fs::path file = tempFolder("meshExport") / "su2.cgns";
+  fs::create_directories(file.parent_path());
+  writeSu2Cgns(p, file);
+  int fn = 0, nZones = 0, nSections = 0;
+  ASSERT_EQ(cg_open(file.c_str(), CG_MODE_READ, &fn), CG_OK);
+  ASSERT_EQ(cg_nzones(fn, 1, &nZones), CG_OK);
+  EXPECT_EQ(nZones, 1);
+  char name[33];
+  cgsize_t size[3];
+  ASSERT_EQ(cg_zone_read(fn, 1, 1, name, size), CG_OK);
+  EXPECT_EQ(size[0], static_cast<cgsize_t>(p.points.size()));
+  EXPECT_EQ(size[1], static_cast<cgsize_t>(p.cells.size()));
+  ASSERT_EQ(cg_nsections(fn, 1, 1, &nSections), CG_OK);
+  ASSERT_EQ(nSections, 6);
+  const std::vector<std::pair<std::string, std::size_t>> expected = {
+      {"cells", p.cells.size()}, {"blade", p.patches[0].edges.size()}, {"inlet", p.patches[1].edges.size()},
+      {"outlet", p.patches[2].edges.size()}, {"periodicLower", p.patches[3].edges.size()},
+      {"periodicUpper", p.patches[4].edges.size()}};
+  for (int s = 1; s <= nSections; ++s) {
+    CGNS_ENUMT(ElementType_t) type;
+    cgsize_t start = 0, end = 0;
+    int nBoundary = 0, parent = 0;
+    ASSERT_EQ(cg_section_read(fn, 1, 1, s, name, &type, &start, &end, &nBoundary, &parent), CG_OK);
+    EXPECT_EQ(name, expected[s - 1].first);
+    EXPECT_EQ(static_cast<std::size_t>(end - start + 1), expected[s - 1].second) << name;
+    EXPECT_EQ(type, s == 1 ? CGNS_ENUMV(QUAD_4) : CGNS_ENUMV(BAR_2)) << name;
+  }
+  cg_close(fn);
+  const std::string config = su2ConfigFragment(p, "su2.cgns");
+  std::ostringstream translation;
+  translation << "0.0, 0.0, 0.0, " << formatExact(p.translation.x()) << ", " << formatExact(p.translation.y());
+  EXPECT_NE(config.find("MARKER_PERIODIC= ( periodicLower, periodicUpper, 0.0, 0.0, 0.0, " + translation.str()),
+            std::string::npos) << config;
+  EXPECT_NE(config.find("MARKER_HEATFLUX= ( blade, 0.0 )"), std::string::npos) << config;
+}
+
+TEST(ExportFormats, ParsedInOrderAndBadListsRefused) {
+  EXPECT_EQ(parseExportFormats("plot3d,foam"), (std::vector{ExportFormat::plot3d, ExportFormat::foam}));
+  EXPECT_EQ(parseExportFormats("su2cgns"), std::vector{ExportFormat::su2cgns});
+  EXPECT_THROW(parseExportFormats("fluent"), InputError);
+  EXPECT_THROW(parseExportFormats("foam,foam"), InputError);
+  EXPECT_THROW(parseExportFormats(""), InputError);
+  EXPECT_THROW(parseExportFormats("foam,"), InputError);
+}
+
+TEST(StagedOutputs, DirectoryReplacedWholeOnlyOnCommit) {
+  const fs::path dir = tempFolder("staged");
+  fs::remove_all(dir);
+  fs::create_directories(dir / "target");
+  std::ofstream(dir / "target" / "old") << "old";
+  {
+    StagedOutputs staged;
+    std::ofstream(staged.stage(dir / "target", true) / "new") << "new";
+    std::ofstream(staged.stage(dir / "file.txt", false)) << "text";
+    EXPECT_TRUE(fs::exists(dir / "target" / "old"));
+    EXPECT_FALSE(fs::exists(dir / "file.txt"));
+  }  // not committed: the temporaries are gone, the target unchanged
+  EXPECT_TRUE(fs::exists(dir / "target" / "old"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  StagedOutputs staged;
+  std::ofstream(staged.stage(dir / "target", true) / "new") << "new";
+  staged.commit();
+  EXPECT_TRUE(fs::exists(dir / "target" / "new"));
+  EXPECT_FALSE(fs::exists(dir / "target" / "old"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  EXPECT_THROW(staged.stage(dir / "target", false), std::runtime_error);  // a directory, not a file
+}
+
+TEST(MeshExport, AllFormatsWrittenIntoTheCase) {
+  const HohMesh hoh = validHohMesh();
+  const fs::path dir = tempFolder("exportCase");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto written = exportMesh(hoh.mesh, dir, {ExportFormat::foam, ExportFormat::plot3d, ExportFormat::su2cgns});
+  EXPECT_EQ(written.size(), 4u);
+  for (const auto& p : written) EXPECT_TRUE(fs::exists(dir / p)) << p;
+  for (const char* f : {"points", "faces", "owner", "neighbour", "boundary"})
+    EXPECT_TRUE(fs::exists(dir / "constant" / "polyMesh" / f)) << f;
+}
