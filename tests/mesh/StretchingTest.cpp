@@ -48,3 +48,23 @@ TEST(Stretching, WallClusteringHitsTheFirstSpacingExactly) {
   EXPECT_THROW(wallClusteredDistances(10, 1.0, 0.2), std::invalid_argument);  // would stretch away
   EXPECT_THROW(wallClusteredDistances(1, 1.0, 0.01), std::invalid_argument);
 }
+
+TEST(Stretching, LastSpacingIsMovedWhileTheFirstStaysExact) {
+  const int n = 100;
+  const double length = 0.5, first = 1e-4;
+  const auto plain = wallClusteredDistances(n, length, first);
+  for (double last : {0.011, 0.015, 0.03}) {  // the plain last spacing is 0.0118
+    auto s = plain;
+    moveLastSpacing(s, last);
+    EXPECT_NEAR(s[1], first, 1e-15) << last;
+    EXPECT_EQ(s[n - 1], length);
+    EXPECT_NEAR(s[n - 1] - s[n - 2], last, 1e-12) << last;
+    for (int j = 1; j < n; ++j) ASSERT_GT(s[j] - s[j - 1], 0.5 * (plain[j] - plain[j - 1])) << last << " " << j;
+  }
+  // A last spacing no such correction reaches is approached without folding: every
+  // spacing stays above half the plain one.
+  auto far = plain;
+  moveLastSpacing(far, 1.0);
+  for (int j = 1; j < n; ++j) ASSERT_GT(far[j] - far[j - 1], 0.5 * (plain[j] - plain[j - 1])) << j;
+  EXPECT_GT(far[n - 1] - far[n - 2], plain[n - 1] - plain[n - 2]);
+}

@@ -32,20 +32,21 @@ std::vector<double> loopDistributionControl(const StructuredBlock& o, int j) {
   return phi;
 }
 
-// Sorenson's explicit boundary control at the outer row: the phi, psi that make the
-// equations at (i, J) hold for lines leaving the outer loop orthogonally with spacing h
-// (x_eta prescribed, x_etaeta from the row inside, one-sided).
-void outerControl(const StructuredBlock& o, int i, double h, double& phi, double& psi) {
-  const int n = o.ni - 1, J = o.nj - 1, e = (i + 1) % n, w = (i + n - 1) % n;
-  const double xXi = 0.5 * (o.xAt(e, J) - o.xAt(w, J)), yXi = 0.5 * (o.yAt(e, J) - o.yAt(w, J));
+// Sorenson's explicit boundary control at row `row` (0: the wall, J: the outer loop): the
+// phi, psi that make the equations there hold for lines leaving the boundary orthogonally
+// with spacing h (x_eta prescribed, x_etaeta one-sided from the neighbouring row).
+void boundaryControl(const StructuredBlock& o, int i, int row, double h, double& phi, double& psi) {
+  const int n = o.ni - 1, e = (i + 1) % n, w = (i + n - 1) % n;
+  const int inner = row == 0 ? 1 : row - 1;
+  const double side = row == 0 ? 1.0 : -1.0;  // x_inner = x_row + side x_eta + x_etaeta / 2
+  const double xXi = 0.5 * (o.xAt(e, row) - o.xAt(w, row)), yXi = 0.5 * (o.yAt(e, row) - o.yAt(w, row));
   const double gamma = xXi * xXi + yXi * yXi, alpha = h * h, length = std::sqrt(gamma);
   // x_eta points away from the blade: J = x_xi y_eta - x_eta y_xi > 0.
   const double xEta = -h * yXi / length, yEta = h * xXi / length;
-  const double xXiXi = o.xAt(e, J) - 2 * o.xAt(i, J) + o.xAt(w, J);
-  const double yXiXi = o.yAt(e, J) - 2 * o.yAt(i, J) + o.yAt(w, J);
-  // x_{J-1} = x_J - x_eta + x_etaeta / 2
-  const double xEtaEta = 2 * (o.xAt(i, J - 1) - o.xAt(i, J) + xEta);
-  const double yEtaEta = 2 * (o.yAt(i, J - 1) - o.yAt(i, J) + yEta);
+  const double xXiXi = o.xAt(e, row) - 2 * o.xAt(i, row) + o.xAt(w, row);
+  const double yXiXi = o.yAt(e, row) - 2 * o.yAt(i, row) + o.yAt(w, row);
+  const double xEtaEta = 2 * (o.xAt(i, inner) - o.xAt(i, row) - side * xEta);
+  const double yEtaEta = 2 * (o.yAt(i, inner) - o.yAt(i, row) - side * yEta);
   // x_xi and x_eta are orthogonal (beta = 0, x_xieta drops out): the equation
   // alpha (x_xixi + phi x_xi) + gamma (x_etaeta + psi x_eta) = 0 projected on each.
   phi = -(xXiXi * xXi + yXiXi * yXi) / gamma - (xEtaEta * xXi + yEtaEta * yXi) / alpha;
@@ -59,8 +60,11 @@ struct Controls {
   std::vector<double> linePsi;       // per node i + n j
   std::vector<double> outerSpacing;  // per i: the initial spacing at the outer loop
   std::vector<double> outerPhi, outerPsi;
+  // With wall orthogonality: Sorenson's values at the wall, blended like the outer ones.
+  bool wallOrthogonal = false;
+  std::vector<double> wallSpacing, wallPsi;
 
-  explicit Controls(const StructuredBlock& o) {
+  Controls(const StructuredBlock& o, bool orthogonalWall) : wallOrthogonal(orthogonalWall) {
     const int n = o.ni - 1, J = o.nj - 1;
     wallPhi = loopDistributionControl(o, 0);
     linePsi.assign(static_cast<std::size_t>(n) * o.nj, 0.0);
@@ -75,6 +79,14 @@ struct Controls {
       outerSpacing[static_cast<std::size_t>(i)] = distance(o, i, J - 1, i, J);
       outerPsi[static_cast<std::size_t>(i)] = linePsi[static_cast<std::size_t>(i + n * (J - 1))];
     }
+    if (wallOrthogonal) {
+      wallSpacing.resize(static_cast<std::size_t>(n));
+      wallPsi.resize(static_cast<std::size_t>(n));
+      for (int i = 0; i < n; ++i) {
+        wallSpacing[static_cast<std::size_t>(i)] = distance(o, i, 0, i, 1);
+        wallPsi[static_cast<std::size_t>(i)] = linePsi[static_cast<std::size_t>(i + n)];
+      }
+    }
   }
 
   // The blend of the header into `g` for a grid of nj rows.
@@ -83,12 +95,13 @@ struct Controls {
     g.phi.assign(linePsi.size(), 0.0);
     g.psi.assign(linePsi.size(), 0.0);
     for (int j = 1; j < J; ++j) {
-      const double s = static_cast<double>(j - 1) / (J - 1);
+      const double s = wallOrthogonal ? static_cast<double>(j) / J : static_cast<double>(j - 1) / (J - 1);
       const double a = (1 - s) * (1 - s) * (1 - s), b = s * s * s;
       for (int i = 0; i < n; ++i) {
         const std::size_t k = static_cast<std::size_t>(i + n * j), ki = static_cast<std::size_t>(i);
         g.phi[k] = a * wallPhi[ki] + b * outerPhi[ki];
         g.psi[k] = linePsi[k] + b * (outerPsi[ki] - linePsi[static_cast<std::size_t>(i + n * (J - 1))]);
+        if (wallOrthogonal) g.psi[k] += a * (wallPsi[ki] - linePsi[static_cast<std::size_t>(i + n)]);
       }
     }
   }
@@ -101,9 +114,16 @@ ControlUpdate outerControlUpdate(Controls& c, double relax, double limit) {
     for (int i = 0; i < n; ++i) {
       double phi, psi;
       const std::size_t k = static_cast<std::size_t>(i);
-      outerControl(grid, i, c.outerSpacing[k], phi, psi);
-      if (std::isfinite(phi)) c.outerPhi[k] = std::clamp(c.outerPhi[k] + relax * (phi - c.outerPhi[k]), -limit, limit);
-      if (std::isfinite(psi)) c.outerPsi[k] = std::clamp(c.outerPsi[k] + relax * (psi - c.outerPsi[k]), -limit, limit);
+      auto relaxed = [&](double& value, double target) {
+        if (std::isfinite(target)) value = std::clamp(value + relax * (target - value), -limit, limit);
+      };
+      boundaryControl(grid, i, grid.nj - 1, c.outerSpacing[k], phi, psi);
+      relaxed(c.outerPhi[k], phi);
+      relaxed(c.outerPsi[k], psi);
+      if (!c.wallOrthogonal) continue;
+      boundaryControl(grid, i, 0, c.wallSpacing[k], phi, psi);
+      relaxed(c.wallPhi[k], phi);
+      relaxed(c.wallPsi[k], psi);
     }
     c.blendInto(g, grid.nj);
   };
@@ -113,7 +133,7 @@ ControlUpdate outerControlUpdate(Controls& c, double relax, double limit) {
 // loop.
 MovingRows movingRows(const StructuredBlock& o, const EllipticOptions& options) {
   MovingRows rows;
-  rows.below = 1 + std::clamp(o.nj / options.wallLayerFraction, 1, options.wallLayerRows);
+  rows.below = 1 + std::min(options.wallLayerRows, std::max(1, o.nj / options.wallLayerFraction));
   rows.above = 1;
   return rows;
 }
@@ -145,14 +165,21 @@ int outerControlFromCoarseGrid(StructuredBlock& o, Controls& fine, const Ellipti
     initial.push_back(coarseBlock(initial.back(), c));
   }
   StructuredBlock coarsest = initial.back();
-  Controls controls(coarsest);
+  Controls controls(coarsest, options.wallOrthogonality);
   const ThompsonReport r = solveWithOuterControl(coarsest, controls, options,
                                                  options.controlMaxSweeps, options.controlTolerance);
   if (!std::isfinite(r.residual)) return r.sweeps;
   // Back up the levels: displacement and outer control values, halved per coarsened
   // direction (they are per index step).
   StructuredBlock solved = coarsest;
-  std::vector<double> phi = controls.outerPhi, psi = controls.outerPsi, dx, dy;
+  std::vector<double> dx, dy;
+  // The boundary values carried up, each with whether it is a phi (per i step) or a psi.
+  std::vector<std::pair<std::vector<double>*, bool>> carried{{&controls.outerPhi, true},
+                                                             {&controls.outerPsi, false}};
+  if (controls.wallOrthogonal) {
+    carried.emplace_back(&controls.wallPhi, true);
+    carried.emplace_back(&controls.wallPsi, false);
+  }
   for (std::size_t l = steps.size(); l-- > 0;) {
     StructuredBlock finer = initial[l];
     interpolateDisplacement(initial[l + 1], solved, steps[l], finer, movingRows(o, options), dx, dy);
@@ -160,15 +187,20 @@ int outerControlFromCoarseGrid(StructuredBlock& o, Controls& fine, const Ellipti
       finer.x[k] += dx[k];
       finer.y[k] += dy[k];
     }
-    phi = interpolateAroundLoop(phi, steps[l], finer.ni - 1);
-    psi = interpolateAroundLoop(psi, steps[l], finer.ni - 1);
-    for (auto& v : phi) v *= steps[l].i ? 0.5 : 1.0;
-    for (auto& v : psi) v *= steps[l].j ? 0.5 : 1.0;
+    for (auto& [values, isPhi] : carried) {
+      *values = interpolateAroundLoop(*values, steps[l], finer.ni - 1);
+      const bool halve = isPhi ? steps[l].i : steps[l].j;
+      for (auto& v : *values) v *= halve ? 0.5 : 1.0;
+    }
     solved = std::move(finer);
   }
   o = solved;
-  fine.outerPhi = phi;
-  fine.outerPsi = psi;
+  fine.outerPhi = controls.outerPhi;
+  fine.outerPsi = controls.outerPsi;
+  if (fine.wallOrthogonal) {
+    fine.wallPhi = controls.wallPhi;
+    fine.wallPsi = controls.wallPsi;
+  }
   return r.sweeps;
 }
 
@@ -176,7 +208,7 @@ int outerControlFromCoarseGrid(StructuredBlock& o, Controls& fine, const Ellipti
 
 EllipticReport smoothOBlock(StructuredBlock& o, const EllipticOptions& options) {
   if (o.ni - 1 < 3 || o.nj < 4) throw std::invalid_argument("smoothOBlock: block too small");
-  Controls controls(o);  // from the algebraic grid, before anything moves
+  Controls controls(o, options.wallOrthogonality);  // from the algebraic grid, before anything moves
   EllipticReport report;
   if (!options.multigrid) {
     const ThompsonReport r =

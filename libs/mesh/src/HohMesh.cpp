@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "passageMesh/mesh/BladeNodes.hpp"
+#include "passageMesh/mesh/LineRedistribution.hpp"
 #include "passageMesh/mesh/OuterLoop.hpp"
 #include "passageMesh/mesh/Stretching.hpp"
 #include "passageMesh/passage/PassageBoundary.hpp"
@@ -23,14 +24,11 @@ StructuredBlock makeBlock(const std::string& name, int ni, int nj) {
   return b;
 }
 
-// A wall-normal line from wall node `b` (unit outward normal `n`) to outer node `o`:
-// a cubic Hermite curve leaving along n and arriving along o - b, with nodes at the
-// wall-clustered arc lengths. Writes nodes j = 0..nN-1 of column i.
-// Node j = 1 sits exactly firstCellHeight along `wallNormal` (the wall normal); the curve
-// beyond it leaves along the smoothed direction `n`.
-void fillNormalLine(StructuredBlock& block, int i, const Eigen::Vector2d& b,
-                    const Eigen::Vector2d& wallNormal, const Eigen::Vector2d& n,
-                    const Eigen::Vector2d& o, double firstCellHeight) {
+// A line from wall node `b` leaving along direction `n` to outer node `o`: a cubic
+// Hermite curve arriving along o - b, with its nodes j = 0 .. nj - 1 of column i evenly
+// spaced in arc length (the rows the elliptic equations are solved on).
+void fillLine(StructuredBlock& block, int i, const Eigen::Vector2d& b, const Eigen::Vector2d& n,
+              const Eigen::Vector2d& o) {
   const double chord = (o - b).norm();
   const Eigen::Vector2d t0 = n * chord * 0.4, t1 = o - b;
   auto curve = [&](double t) {
@@ -39,33 +37,68 @@ void fillNormalLine(StructuredBlock& block, int i, const Eigen::Vector2d& b,
                            (-2 * t3 + 3 * t2) * o + (t3 - t2) * t1);
   };
   constexpr int samples = 400;
-  std::vector<double> s(samples + 1, 0.0), ts(samples + 1, 0.0);
+  std::vector<double> s(samples + 1, 0.0);
   Eigen::Vector2d last = b;
   for (int k = 1; k <= samples; ++k) {
-    // Denser samples near the wall, where the first node must land exactly.
-    ts[k] = std::pow(static_cast<double>(k) / samples, 2.0);
-    const Eigen::Vector2d p = curve(ts[k]);
+    const Eigen::Vector2d p = curve(static_cast<double>(k) / samples);
     s[k] = s[k - 1] + (p - last).norm();
     last = p;
   }
-  const auto distances = wallClusteredDistances(block.nj, s.back(), firstCellHeight);
   std::size_t k = 1;
   for (int j = 0; j < block.nj; ++j) {
-    Eigen::Vector2d p;
-    if (j == 0) {
-      p = b;
-    } else if (j == block.nj - 1) {
-      p = o;
-    } else if (j == 1) {
-      p = b + firstCellHeight * wallNormal;  // exact first cell height, orthogonal
-    } else {
-      while (k < s.size() - 1 && s[k] < distances[j]) ++k;
-      const double f = (distances[j] - s[k - 1]) / (s[k] - s[k - 1]);
-      p = curve(ts[k - 1] + f * (ts[k] - ts[k - 1]));
-    }
+    const double target = s.back() * j / (block.nj - 1);
+    while (k < s.size() - 1 && s[k] < target) ++k;
+    const double f = (target - s[k - 1]) / (s[k] - s[k - 1]);
+    const Eigen::Vector2d p = j == 0 ? b : j == block.nj - 1 ? o : curve((k - 1 + f) / samples);
     block.xAt(i, j) = p.x();
     block.yAt(i, j) = p.y();
   }
+}
+
+// Line directions: the wall normals smoothed around the loop. Where the normal turns
+// fast (a small trailing-edge radius with few nodes) the raw normals cross a short way
+// out and fold the cells; smoothed ones fan out instead (method.md section 4).
+std::vector<Eigen::Vector2d> lineDirections(const std::vector<BladeNode>& wall, int passes) {
+  const int nT = static_cast<int>(wall.size());
+  std::vector<Eigen::Vector2d> direction(wall.size()), next(wall.size());
+  for (int i = 0; i < nT; ++i) direction[i] = wall[i].outwardNormal;
+  for (int pass = 0; pass < passes; ++pass) {
+    for (int i = 0; i < nT; ++i)
+      next[i] = (direction[(i + nT - 1) % nT] + 2 * direction[i] + direction[(i + 1) % nT]).normalized();
+    direction.swap(next);
+  }
+  return direction;
+}
+
+// The O-block the elliptic equations are solved on: `rows` rows evenly spaced along
+// lines from the wall nodes to the outer loop's nodes, the seam column repeated.
+StructuredBlock algebraicOBlock(const std::vector<BladeNode>& wall, const OuterLoop& outer, int rows) {
+  const int nT = static_cast<int>(wall.size());
+  StructuredBlock o = makeBlock("OBlock", nT + 1, rows);
+  const auto direction = lineDirections(wall, 20);
+  for (int i = 0; i < nT; ++i) fillLine(o, i, wall[i].point, direction[i], outer.nodes[i]);
+  for (int j = 0; j < rows; ++j) {
+    o.xAt(nT, j) = o.xAt(0, j);
+    o.yAt(nT, j) = o.yAt(0, j);
+  }
+  return o;
+}
+
+// An H-block of uniform cells between x = xBegin and x = xEnd whose edge at x = xInterface
+// (one of the two) carries the O-block's interface nodes `interface` (bottom to top).
+StructuredBlock hBlock(const std::string& name, double xBegin, double xEnd, bool interfaceAtEnd,
+                       const std::vector<Eigen::Vector2d>& interface, double pitch) {
+  const int intervals = static_cast<int>(interface.size()) - 1;
+  const double length = xEnd - xBegin;
+  const int ni = 1 + std::max(1, static_cast<int>(std::lround(length / (pitch / intervals))));
+  StructuredBlock h = makeBlock(name, ni, intervals + 1);
+  const int iInterface = interfaceAtEnd ? ni - 1 : 0;
+  for (int j = 0; j <= intervals; ++j)
+    for (int i = 0; i < ni; ++i) {
+      h.xAt(i, j) = i == iInterface ? interface[j].x() : xBegin + length * i / (ni - 1);
+      h.yAt(i, j) = interface[j].y();
+    }
+  return h;
 }
 
 // The blade must lie strictly between the periodic boundaries. Large yIn or yOut, or a
@@ -113,75 +146,46 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
     return result;
   }
 
-  // Line directions: the wall normals smoothed around the loop. Where the normal turns
-  // fast (a small trailing-edge radius with few nodes) the raw normals cross a short way
-  // out and fold the cells; smoothed ones fan out instead (method.md section 4).
-  std::vector<Eigen::Vector2d> direction(nT), firstRowDirection(nT);
-  for (int i = 0; i < nT; ++i) direction[i] = wall[i].outwardNormal;
-  // The first row (j = 1) leaves along the normal smoothed twice only: orthogonal to the
-  // wall to within a degree except at the sharpest edges, where the raw normals of SIRT's
-  // trailing edge (radius about 2 firstCellHeight) already fold the second cell.
-  constexpr int firstRowPasses = 2;
-  for (int pass = 0; pass < 20; ++pass) {
-    if (pass == firstRowPasses) firstRowDirection = direction;
-    std::vector<Eigen::Vector2d> next(nT);
-    for (int i = 0; i < nT; ++i)
-      next[i] = (direction[(i + nT - 1) % nT] + 2 * direction[i] + direction[(i + 1) % nT]).normalized();
-    direction.swap(next);
-  }
-
-  StructuredMesh& mesh = result.mesh;
+  // The O-block: solved on evenly spaced rows, then clustered to the wall along the
+  // smoothed lines (LineRedistribution.hpp).
   const int nN = result.nN, J = nN - 1;
-  StructuredBlock o = makeBlock("OBlock", nT + 1, nN);
-  try {
-    for (int i = 0; i < nT; ++i)
-      fillNormalLine(o, i, wall[i].point, firstRowDirection[i], direction[i], outer.nodes[i],
-                     condition.firstCellHeight);
-  } catch (const std::invalid_argument& e) {
-    result.problem = std::string("O-block: ") + e.what();
-    return result;
-  }
-  for (int j = 0; j < nN; ++j) {  // the seam
-    o.xAt(nT, j) = o.xAt(0, j);
-    o.yAt(nT, j) = o.yAt(0, j);
-  }
-  if (options.smooth && nN >= 4) {
-    result.smoothing = smoothOBlock(o, options.elliptic);
+  StructuredBlock lines = algebraicOBlock(wall, outer, std::min(nN, options.smoothingRows));
+  if (options.smooth && lines.nj >= 4) {
+    result.smoothing = smoothOBlock(lines, options.elliptic);
     if (!std::isfinite(result.smoothing.residual)) {
       result.problem = "O-block: the elliptic smoothing diverged";
       return result;
     }
   }
+  StructuredBlock o = makeBlock("OBlock", nT + 1, nN);
+  try {
+    // The wall normals smoothed twice only: orthogonal to the wall to within a degree
+    // except at the sharpest edges, where the raw normals of SIRT's trailing edge (radius
+    // about 2 firstCellHeight) fold the second cell.
+    redistributeAlongLines(lines, o, condition.firstCellHeight, lineDirections(wall, 2),
+                           options.wallBlendLength);
+  } catch (const std::invalid_argument& e) {
+    result.problem = std::string("O-block: ") + e.what();
+    return result;
+  }
 
-  // H-blocks: uniform cells, their interface nodes copied from the O-block.
+  // H-blocks: uniform cells, their interface nodes the O-block's.
+  auto outerNode = [&](int i) { return Eigen::Vector2d(o.xAt(i, J), o.yAt(i, J)); };
   const int inletIntervals = outer.inletLower + outer.inletUpper;
   const int inletBegin = outer.lowerPeriodicEnd();
-  const double dyIn = condition.pitch / inletIntervals;
-  const double inletLength = boundary.inletInterfaceX() - boundary.inletX();
-  const int niIn = 1 + std::max(1, static_cast<int>(std::lround(inletLength / dyIn)));
-  StructuredBlock hIn = makeBlock("HInlet", niIn, inletIntervals + 1);
-  for (int j = 0; j <= inletIntervals; ++j) {
-    const double xI = o.xAt(inletBegin + j, J), yI = o.yAt(inletBegin + j, J);
-    for (int i = 0; i < niIn; ++i) {
-      hIn.xAt(i, j) = i == niIn - 1 ? xI : boundary.inletX() + inletLength * i / (niIn - 1);
-      hIn.yAt(i, j) = yI;
-    }
-  }
+  std::vector<Eigen::Vector2d> inletNodes, outletNodes;
+  for (int j = 0; j <= inletIntervals; ++j) inletNodes.push_back(outerNode(inletBegin + j));
+  // Outlet, bottom to top: the lower corner (O-block i = outletLower) down the O-block's
+  // i to the seam, then from i = nT down to the upper corner.
   const int outletIntervals = outer.outletLower + outer.outletUpper;
-  const double dyOut = condition.pitch / outletIntervals;
-  const double outletLength = boundary.outletX() - boundary.outletInterfaceX();
-  const int niOut = 1 + std::max(1, static_cast<int>(std::lround(outletLength / dyOut)));
-  StructuredBlock hOut = makeBlock("HOutlet", niOut, outletIntervals + 1);
-  for (int j = 0; j <= outletIntervals; ++j) {
-    // Bottom corner (O-block i = outletLower) down the O-block's i to the seam, then from
-    // i = nT down to the top corner.
-    const int io = j <= outer.outletLower ? outer.outletLower - j : nT - (j - outer.outletLower);
-    const double xI = o.xAt(io, J), yI = o.yAt(io, J);
-    for (int i = 0; i < niOut; ++i) {
-      hOut.xAt(i, j) = i == 0 ? xI : xI + outletLength * i / (niOut - 1);
-      hOut.yAt(i, j) = yI;
-    }
-  }
+  for (int j = 0; j <= outletIntervals; ++j)
+    outletNodes.push_back(outerNode(j <= outer.outletLower ? outer.outletLower - j : nT - (j - outer.outletLower)));
+  StructuredBlock hIn = hBlock("HInlet", boundary.inletX(), boundary.inletInterfaceX(), true,
+                               inletNodes, condition.pitch);
+  StructuredBlock hOut = hBlock("HOutlet", boundary.outletInterfaceX(), boundary.outletX(), false,
+                                outletNodes, condition.pitch);
+  const int niIn = hIn.ni, niOut = hOut.ni;
+  StructuredMesh& mesh = result.mesh;
   mesh.blocks = {hIn, o, hOut};
 
   // Connections and patches (block indices 0 HInlet, 1 OBlock, 2 HOutlet).

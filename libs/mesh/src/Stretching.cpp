@@ -60,4 +60,25 @@ std::vector<double> wallClusteredDistances(int n, double length, double firstSpa
   return s;
 }
 
+void moveLastSpacing(std::vector<double>& s, double lastSpacing) {
+  const int last = static_cast<int>(s.size()) - 1;
+  if (last < 2 || !(lastSpacing > 0)) return;
+  // The last spacing grows by c h (1 - h)^8, h = 1 / last.
+  const double h = 1.0 / last;
+  double c = (lastSpacing - (s[last] - s[last - 1])) / (h * std::pow(1 - h, 8));
+  for (int attempt = 0; attempt < 20; ++attempt, c *= 0.5) {
+    std::vector<double> moved(s);
+    for (int j = 1; j < last; ++j) {
+      const double t = static_cast<double>(j) / last;
+      moved[j] += c * std::pow(t, 8) * (t - 1);
+    }
+    bool monotone = true;
+    for (int j = 1; j <= last && monotone; ++j) monotone = moved[j] - moved[j - 1] > 0.5 * (s[j] - s[j - 1]);
+    if (monotone) {
+      s = std::move(moved);
+      return;
+    }
+  }
+}
+
 }  // namespace passageMesh

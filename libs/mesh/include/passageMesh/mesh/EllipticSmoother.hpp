@@ -1,22 +1,25 @@
 #pragma once
 // Elliptic smoothing of the O-block (method.md section 4, docs/elliptic-smoothing.md).
 //
-// Fixed: the wall row j = 0, the wall layer j = 1 .. L (row 1 exactly firstCellHeight from
-// its wall node, so the first cell height is exact by construction; L = wallLayerRows, at
-// most nj / wallLayerFraction) and the outer loop. Moving: rows L + 1 .. nj - 2, by
-// ThompsonSolver's equations (Thomas-Middlecoff form) with
-//   phi(i, j) = phiWall(i) (1 - s)^3 + phiOuter(i) s^3,                 s = (j - 1) / (nj - 2)
-//   psi(i, j) = psiLine(i, j) + (psiOuter(i) - psiLine(i, nj - 2)) s^3,
+// buildHohMesh calls it on an O-block whose rows are evenly spaced along each line (no wall
+// clustering; HohMesh.hpp). Fixed: the wall row, an optional wall layer j = 1 .. L
+// (L = wallLayerRows, at most nj / wallLayerFraction; 0 by default) and the outer loop.
+// Moving: the rows between, by ThompsonSolver's equations (Thomas-Middlecoff form) with
+//   phi(i, j) = phiWall(i) (1 - s)^3 + phiOuter(i) s^3,
+//   psi(i, j) = psiLine(i, j) + (psiWall(i) - psiLine(i, 1)) (1 - s)^3
+//                             + (psiOuter(i) - psiLine(i, nj - 2)) s^3,    s = j / (nj - 1)
 // where
-//   phiWall   = -t_xixi / t_xi of the wall node distribution (arc length t),
-//   psiLine   = -s_etaeta / s_eta of the initial (algebraic) line: it keeps the wall
-//               clustering solved for the first cell height,
-//   phiOuter, psiOuter = Sorenson's boundary control at the outer loop: the values that
-//               make the outer-row equations hold for lines leaving the loop orthogonally
-//               with the initial outer spacing. They depend on the grid they shape, so
-//               they are found by under-relaxed iteration together with the grid, on a
-//               coarse copy of the O-block (cheap, and this coupled iteration is only
-//               stable with slowly converging sweeps), then carried to the full grid.
+//   psiLine   = -s_etaeta / s_eta of the initial (algebraic) line,
+//   phiWall, psiWall, phiOuter, psiOuter = Sorenson's boundary control at the wall and at
+//               the outer loop: the values that make the boundary rows' equations hold for
+//               lines leaving the boundary orthogonally with the initial spacing there.
+//               They depend on the grid they shape, so they are found by under-relaxed
+//               iteration together with the grid, on a coarse copy of the O-block (cheap,
+//               and this coupled iteration is only stable with slowly converging sweeps),
+//               then carried to the full grid.
+// With wallOrthogonality off (the first tool's setting, for wall-clustered grids whose
+// 1/dn1^2 scale the wall values do not survive), phiWall is -t_xixi / t_xi of the wall
+// node distribution, psiWall is not used and s = (j - 1) / (nj - 2).
 // Orthogonality at the outer loop is what keeps the grid unfolded at its re-entrant
 // kinks (where a camber-following periodic boundary meets the straight outlet part).
 // The full grid is then solved with the control functions fixed, by FAS multigrid
@@ -27,13 +30,14 @@
 namespace passageMesh {
 
 struct EllipticOptions {
-  // The wall layer: rows 1 .. this many stay where the algebraic grid put them (lines along
-  // the smoothed wall normals, clustered for the exact first cell height), at most one
-  // row in wallLayerFraction. It keeps the near-wall cells orthogonal, which the equations
-  // alone do not (measured Q at the defaults, row 1 only / rows 1-12: LS89 0.358 / 0.376,
-  // STD10 0.404 / 0.455, T106A 0.440 / 0.452, SIRT 0.428 / 0.487).
-  int wallLayerRows = 12;
+  // The wall layer: rows 1 .. this many stay where the algebraic grid put them, at most
+  // one row in wallLayerFraction. 0 with wallOrthogonality (docs/elliptic-smoothing.md:
+  // a fixed layer kinks the lines at its top).
+  int wallLayerRows = 0;
   int wallLayerFraction = 8;
+  // Sorenson's control at the wall too (lines leave the wall orthogonally with the initial
+  // wall spacing), iterated with the outer values; for grids without wall clustering.
+  bool wallOrthogonality = true;
   double tolerance = 1e-5;          // ThompsonReport::residual of the full grid
   bool multigrid = true;            // false: single-grid line relaxation on the full grid
   int maxCycles = 100;              // multigrid V-cycles
@@ -48,7 +52,7 @@ struct EllipticOptions {
   double controlTolerance = 1e-4;
   int controlMaxSweeps = 400;
   double controlRelaxation = 0.05;
-  double controlLimit = 1.0;
+  double controlLimit = 1.5;
 };
 
 struct EllipticReport {

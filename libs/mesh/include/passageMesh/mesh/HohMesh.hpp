@@ -9,11 +9,13 @@
 //   node repeated: i = 0 and i = nT coincide), j from the wall (0) outwards (nN nodes).
 // Both index systems are right-handed: every valid cell has positive area.
 //
-// The O-block starts algebraic: j-lines leave each wall node along the (smoothed) wall
-// normal and end at the facing outer-loop node (cubic Hermite curves), with the nodes
-// along each line clustered to the wall so that the first one sits exactly
-// firstCellHeight away. Then smoothOBlock (EllipticSmoother.hpp) solves the elliptic grid
-// equations for rows 2 .. nN - 2; the wall row, the first row and the outer loop stay.
+// The O-block is built on few rows first: j-lines leave each wall node along the
+// (smoothed) wall normal and end at the facing outer-loop node (cubic Hermite curves),
+// HohMeshOptions::smoothingRows rows evenly spaced along each; smoothOBlock
+// (EllipticSmoother.hpp) solves the elliptic grid equations on them with lines
+// orthogonal at the wall and at the outer loop; then the nN final rows are placed along
+// the smoothed lines, clustered so that the first one sits exactly firstCellHeight from
+// the wall (LineRedistribution.hpp).
 #include <string>
 
 #include "passageMesh/mesh/EllipticSmoother.hpp"
@@ -28,6 +30,13 @@ namespace passageMesh {
 
 struct HohMeshOptions {
   bool smooth = true;          // false: the algebraic mesh only
+  // The elliptic equations are solved on this many rows (at most nN), evenly spaced along
+  // the lines; the final nN rows are then placed along the smoothed lines
+  // (LineRedistribution.hpp; docs/elliptic-smoothing.md has the measurements).
+  int smoothingRows = 33;
+  // Over this many wall node spacings from the wall (at least 20 firstCellHeight) the final
+  // nodes blend from the wall normal into the smoothed line (LineRedistribution.hpp).
+  double wallBlendLength = 3.0;
   EllipticOptions elliptic;
 };
 

@@ -28,6 +28,14 @@ double tanhStretch(double xi, double gammaStart, double gammaEnd);
 // wall, n < 2, or non-positive lengths.
 std::vector<double> wallClusteredDistances(int n, double length, double firstSpacing);
 
+// Moves the last spacing of increasing distances s_0 .. s_m (m >= 2) to `lastSpacing`,
+// keeping both ends: c t^8 (t - 1), t = j / m, is added to each, c chosen so the last
+// spacing becomes `lastSpacing`, halved (up to 20 times, else nothing changes) while any
+// spacing would fall below half of what it was. t^8 leaves the first spacing exact (to
+// round-off) and the wall half of a line unchanged; LineRedistribution uses it to match
+// the cells beyond the outer loop (the H-blocks and the periodic images).
+void moveLastSpacing(std::vector<double>& distances, double lastSpacing);
+
 // The clustering strength wallClusteredDistances uses.
 double wallClusteringStrength(int n, double length, double firstSpacing);
 

@@ -1,0 +1,72 @@
+// Q along each meshing parameter (issue 11 item 3): one tutorial at its passageDict, the
+// other parameters at the defaults; nT from 250 to 450 in steps of 1, every other
+// parameter over its whole range in steps of 1 % of the range. Writes one CSV per
+// parameter (value, Q; Q = -1 for an invalid mesh) and prints the largest change of Q
+// between neighbouring steps where both meshes are valid (docs/benchmarks.md).
+//
+//   build/bench/qualityAlongParameters TUTORIAL OUTPUT_DIR [threads=2]
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "passageMesh/blade/BladeFit.hpp"
+#include "passageMesh/blade/BladePoints.hpp"
+#include "passageMesh/core/ParallelFor.hpp"
+#include "passageMesh/core/PointFile.hpp"
+#include "passageMesh/mesh/HohMesh.hpp"
+#include "passageMesh/quality/MeshQuality.hpp"
+
+using namespace passageMesh;
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: qualityAlongParameters TUTORIAL OUTPUT_DIR [threads=2]\n");
+    return 2;
+  }
+  const std::string name = argv[1];
+  const std::filesystem::path output = argv[2];
+  const int threads = argc > 3 ? std::max(1, std::atoi(argv[3])) : 2;
+  const auto dir = std::filesystem::path(PASSAGEMESH_SOURCE_DIR) / "tutorials" / name;
+  const auto points = orderBladePoints(readPointFile(dir / "constant" / "bladePoints.dat")).points;
+  const BladeShape blade(fitBlade(points).parameters);
+  const double chord = blade.parameters().chord;
+  const auto condition = readPassageDict(dir / "system" / "passageDict.xml", chord);
+  const MeshingParameters defaults = MeshingParameters::defaults(chord);
+  const auto lower = MeshingParameters::lowerBounds(chord), upper = MeshingParameters::upperBounds(chord);
+  const char* names[MeshingParameters::size] = {"yIn", "yOut", "alphaCamber", "betaIn",
+                                                "betaOut", "nT", "gammaLE", "gammaTE"};
+  std::filesystem::create_directories(output);
+  std::printf("| parameter | steps | valid | largest |dQ| between valid neighbours | at |\n|---|---|---|---|---|\n");
+  for (int k = 0; k < MeshingParameters::size; ++k) {
+    const bool nT = k == 5;
+    const int steps = nT ? 201 : 101;
+    std::vector<double> value(steps), q(steps);
+    for (int s = 0; s < steps; ++s)
+      value[s] = nT ? 250 + s : lower[k] + (upper[k] - lower[k]) * s / (steps - 1);
+    parallelFor(steps, threads, [&](int s) {
+      auto a = defaults.toArray();
+      a[static_cast<std::size_t>(k)] = value[static_cast<std::size_t>(s)];
+      const HohMesh hoh = buildHohMesh(blade, condition, MeshingParameters::fromArray(a));
+      q[static_cast<std::size_t>(s)] = hoh.valid ? computeMeshQuality(hoh.mesh).Q : invalidMeshQuality;
+    });
+    std::ofstream csv(output / (name + "-" + names[k] + ".csv"));
+    csv << names[k] << ",Q\n";
+    csv.precision(17);
+    double largest = 0, at = value[0];
+    int valid = 0;
+    for (int s = 0; s < steps; ++s) {
+      csv << value[s] << "," << q[s] << "\n";
+      valid += q[s] > invalidMeshQuality;
+      if (s > 0 && q[s] > invalidMeshQuality && q[s - 1] > invalidMeshQuality &&
+          std::abs(q[s] - q[s - 1]) > largest)
+        largest = std::abs(q[s] - q[s - 1]), at = value[s];
+    }
+    std::printf("| %s | %d | %d | %.4f | %.6g |\n", names[k], steps, valid, largest, at);
+    std::fflush(stdout);
+  }
+}
