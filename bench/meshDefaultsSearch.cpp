@@ -5,7 +5,7 @@
 // confirmed on passages of another seed beside the current defaults.
 //
 //   build/bench/meshDefaultsSearch [budget=60] [passages=200] [threads=2]
-//                                  [seed=20261201] [confirmSeed=20261202]
+//                                  [seed=20261201] [confirmSeed=20261202] [patternShare=0.15]
 //
 // An invalid mesh (or a periodic boundary through the blade) counts as Q = -1, so the
 // median also rewards parameter sets that mesh more passages. Prints the progress, the
@@ -76,8 +76,9 @@ int main(int argc, char** argv) {
   const int threads = argc > 3 ? std::atoi(argv[3]) : 2;
   const std::uint64_t seed = argc > 4 ? std::strtoull(argv[4], nullptr, 10) : 20261201;
   const std::uint64_t confirmSeed = argc > 5 ? std::strtoull(argv[5], nullptr, 10) : 20261202;
+  const double patternShare = argc > 6 ? std::atof(argv[6]) : 0.15;
   if (budget < 1 || count < 1 || threads < 1) {
-    std::fprintf(stderr, "usage: meshDefaultsSearch [budget>=1] [passages>=1] [threads>=1] [seed] [confirmSeed]\n");
+    std::fprintf(stderr, "usage: meshDefaultsSearch [budget>=1] [passages>=1] [threads>=1] [seed] [confirmSeed] [patternShare]\n");
     return 2;
   }
   const std::vector<PassageDraw> passages = samplePassages(count, seed);
@@ -87,6 +88,7 @@ int main(int argc, char** argv) {
   options.budget = budget;
   options.seed = 1;
   options.start = defaults;
+  options.patternSearchShare = patternShare;
   options.progress = [&](const OptimizationProgress& p) {
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("evaluations %ld of %ld, best median Q %.6f, %.0f s\n", p.evaluations, p.budget,

@@ -2,7 +2,8 @@
 // other parameters at the defaults; nT from 250 to 450 in steps of 1, every other
 // parameter over its whole range in steps of 1 % of the range. Writes one CSV per
 // parameter (value, Q; Q = -1 for an invalid mesh) and prints the largest change of Q
-// between neighbouring steps where both meshes are valid (docs/benchmarks.md).
+// between neighbouring steps where both meshes are valid (docs/benchmarks.md); draws all
+// eight curves into OUTPUT_DIR/TUTORIAL-qualityAlongParameters.png.
 //
 //   build/bench/qualityAlongParameters TUTORIAL OUTPUT_DIR [threads=2]
 #include <algorithm>
@@ -16,6 +17,7 @@
 
 #include "passageMesh/blade/BladeFit.hpp"
 #include "passageMesh/blade/BladePoints.hpp"
+#include "passageMesh/core/GnuplotRun.hpp"
 #include "passageMesh/core/ParallelFor.hpp"
 #include "passageMesh/core/PointFile.hpp"
 #include "passageMesh/mesh/HohMesh.hpp"
@@ -42,6 +44,10 @@ int main(int argc, char** argv) {
                                                 "betaOut", "nT", "gammaLE", "gammaTE"};
   std::filesystem::create_directories(output);
   std::printf("| parameter | steps | valid | largest |dQ| between valid neighbours | at |\n|---|---|---|---|---|\n");
+  GnuplotRun gnuplot;
+  std::string script = gnuplotPngTerminal(1600, 900) + gnuplot.output(output / (name + "-qualityAlongParameters.png")) +
+                       "set multiplot layout 2,4 title " + gnuplotQuoted(name + ": Q along each meshing parameter, the others at the defaults (invalid: not drawn)") + "\n"
+                       "set datafile separator ','\nset key off\nset grid\nset ylabel 'Q'\n";
   for (int k = 0; k < MeshingParameters::size; ++k) {
     const bool nT = k == 5;
     const int steps = nT ? 201 : 101;
@@ -57,16 +63,22 @@ int main(int argc, char** argv) {
     std::ofstream csv(output / (name + "-" + names[k] + ".csv"));
     csv << names[k] << ",Q\n";
     csv.precision(17);
+    std::string plotted;
     double largest = 0, at = value[0];
     int valid = 0;
     for (int s = 0; s < steps; ++s) {
       csv << value[s] << "," << q[s] << "\n";
+      if (q[s] > invalidMeshQuality)
+        plotted += std::to_string(nT ? value[s] : value[s] / (k < 2 ? chord : 1.0)) + "," + std::to_string(q[s]) + "\n";
       valid += q[s] > invalidMeshQuality;
       if (s > 0 && q[s] > invalidMeshQuality && q[s - 1] > invalidMeshQuality &&
           std::abs(q[s] - q[s - 1]) > largest)
         largest = std::abs(q[s] - q[s - 1]), at = value[s];
     }
     std::printf("| %s | %d | %d | %.4f | %.6g |\n", names[k], steps, valid, largest, at);
+    script += "set xlabel " + gnuplotQuoted(std::string(names[k]) + (k < 2 ? " [chords]" : "")) + "\nplot " +
+              gnuplot.dataFile(plotted) + " using 1:2 with linespoints pt 7 ps 0.3\n";
     std::fflush(stdout);
   }
+  gnuplot.run(script + "unset multiplot\n");
 }

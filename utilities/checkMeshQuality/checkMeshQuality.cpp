@@ -41,13 +41,7 @@ int main(int argc, char* argv[]) {
     if (!cli.parse(argc, argv)) return 0;
     const auto& dir = cli.caseDir();
     const auto cgnsFile = dir / "mesh" / "passage.cgns";
-    const StructuredMesh mesh = readCgns(cgnsFile);
-    MeshQuality quality;
-    try {
-      quality = computeMeshQuality(mesh, {.everyBlock = true});
-    } catch (const std::invalid_argument& e) {
-      throw InputError(cgnsFile.string(), 0, e.what());
-    }
+    const auto [mesh, quality] = readMeshWithQuality(cgnsFile);
     auto files = vtmFileContents(mesh, dir / "mesh" / "passage.vtm",
                                  {{"QJ", finiteOrPenalty(quality.cellQJ)},
                                   {"QS", finiteOrPenalty(quality.cellQS)}});

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "passageMesh/core/CommandLine.hpp"
+#include "passageMesh/quality/MeshQualityReport.hpp"
 #include "passageMesh/core/InputError.hpp"
 #include "passageMesh/core/PointFile.hpp"
 #include "passageMesh/structured/CgnsReader.hpp"
@@ -24,13 +25,7 @@ int main(int argc, char* argv[]) {
     if (!cli.parse(argc, argv)) return 0;
     const auto& dir = cli.caseDir();
     const auto cgnsFile = dir / "mesh" / "passage.cgns";
-    const StructuredMesh mesh = readCgns(cgnsFile);
-    MeshQuality quality;
-    try {
-      quality = computeMeshQuality(mesh, {.everyBlock = true});
-    } catch (const std::invalid_argument& e) {
-      throw InputError(cgnsFile.string(), 0, e.what());
-    }
+    const auto [mesh, quality] = readMeshWithQuality(cgnsFile);
     const auto pointsFile = dir / "constant" / "bladePoints.dat";
     const auto profileFile = dir / "constant" / "bladeProfile.dat";
     BladeCurves blade;

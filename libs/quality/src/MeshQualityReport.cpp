@@ -3,6 +3,10 @@
 #include <tinyxml2.h>
 
 #include <cstdio>
+#include <stdexcept>
+
+#include "passageMesh/core/InputError.hpp"
+#include "passageMesh/structured/CgnsReader.hpp"
 
 #include "passageMesh/core/AtomicFile.hpp"
 
@@ -104,6 +108,16 @@ std::string formatMeshQualitySummary(const StructuredMesh& mesh, const MeshQuali
                 statisticsLine(q.blocks[b]).c_str());
   }
   return s;
+}
+
+MeshWithQuality readMeshWithQuality(const std::filesystem::path& cgnsFile) {
+  MeshWithQuality result{readCgns(cgnsFile), {}};
+  try {
+    result.quality = computeMeshQuality(result.mesh, {.everyBlock = true});
+  } catch (const std::invalid_argument& e) {
+    throw InputError(cgnsFile.string(), 0, e.what());
+  }
+  return result;
 }
 
 }  // namespace passageMesh
