@@ -157,6 +157,13 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
       return result;
     }
   }
+  // A fold of the smoothed lines is named as such: placing rows along them cannot undo it.
+  const std::string linesFold = findInvalidCell(StructuredMesh{{lines}, {}, {}});
+  if (!linesFold.empty()) {
+    result.problem = std::string(options.smooth ? "the smoothed" : "the algebraic") + " lines fold: " +
+                     linesFold + " of " + std::to_string(lines.nj) + " rows";
+    return result;
+  }
   StructuredBlock o = makeBlock("OBlock", nT + 1, nN);
   try {
     // The wall normals smoothed twice only: orthogonal to the wall to within a degree
