@@ -1,6 +1,8 @@
 #!/bin/bash
 # Runs every tutorial (blade points -> checked mesh) on a copy in a temporary folder and
-# requires `cgnscheck mesh/passage.cgns` to print no warning and no error (issue 3).
+# requires `cgnscheck mesh/passage.cgns` to print no warning and no error (issue 3), and
+# where OpenFOAM is installed checkMesh "Mesh OK." on the exported polyMesh and the Plot3D
+# export read by plot3dToFoam to the same cell count (issue 13).
 #   runTutorials.sh SOURCE_DIR BUILD_DIR
 set -euo pipefail
 source="$1"
@@ -28,5 +30,10 @@ for blade in LS89 STD10 T106A SIRT; do
   "$source/tests/tutorials/checkFoamMesh.sh" "$work/tutorials/$blade" > "$work/checkMesh.out" || status=$?
   if [ "$status" = 1 ]; then echo "$blade: checkMesh fails:"; cat "$work/checkMesh.out"; exit 1; fi
   sed "s/^/$blade: /" "$work/checkMesh.out" | grep -E "Mesh OK|skipped|cells:"
+  # The Plot3D export read by OpenFOAM's plot3dToFoam: the same number of cells.
+  status=0
+  "$source/tests/tutorials/checkPlot3dMesh.sh" "$work/tutorials/$blade" > "$work/plot3d.out" || status=$?
+  if [ "$status" = 1 ]; then echo "$blade: the Plot3D file does not read back:"; cat "$work/plot3d.out"; exit 1; fi
+  sed "s/^/$blade: /" "$work/plot3d.out"
   grep -m1 "Q = " "$work/tutorials/$blade/log.checkMeshQuality" | sed "s/^/$blade: /"
 done
