@@ -61,11 +61,14 @@ void report(const char* label, const std::vector<double>& q) {
               quantile(q, 0.5), quantile(q, 0.75));
 }
 
+// The set in chords: yIn and yOut (the first two) with the suffix c, as meshDict takes them.
 void printParameters(const char* label, const Eigen::VectorXd& v) {
-  const MeshingParameters p = toMeshingParameters(v);
-  std::printf("%s: yIn %.6gc yOut %.6gc alphaCamber %.6g betaIn %.6g betaOut %.6g nT %d gammaLE %.6g "
-              "gammaTE %.6g\n", label, p.yIn, p.yOut, p.alphaCamber, p.betaIn, p.betaOut, p.nT,
-              p.gammaLe, p.gammaTe);
+  const auto& names = MeshingParameters::names();
+  const auto values = toMeshingParameters(v).toArray();
+  std::printf("%s:", label);
+  for (int k = 0; k < MeshingParameters::size; ++k)
+    std::printf(" %s %.6g%s", names[k].c_str(), values[static_cast<std::size_t>(k)], k <= 1 ? "c" : "");
+  std::printf("\n");
 }
 
 }  // namespace

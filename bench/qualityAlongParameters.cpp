@@ -40,8 +40,7 @@ int main(int argc, char** argv) {
   const auto condition = readPassageDict(dir / "system" / "passageDict.xml", chord);
   const MeshingParameters defaults = MeshingParameters::defaults(chord);
   const auto lower = MeshingParameters::lowerBounds(chord), upper = MeshingParameters::upperBounds(chord);
-  const char* names[MeshingParameters::size] = {"yIn", "yOut", "alphaCamber", "betaIn",
-                                                "betaOut", "nT", "gammaLE", "gammaTE"};
+  const auto& names = MeshingParameters::names();
   std::filesystem::create_directories(output);
   std::printf("| parameter | steps | valid | largest |dQ| between valid neighbours | at |\n|---|---|---|---|---|\n");
   GnuplotRun gnuplot;
@@ -49,7 +48,8 @@ int main(int argc, char** argv) {
                        "set multiplot layout 2,4 title " + gnuplotQuoted(name + ": Q along each meshing parameter, the others at the defaults (invalid: not drawn)") + "\n"
                        "set datafile separator ','\nset key off\nset grid\nset ylabel 'Q'\n";
   for (int k = 0; k < MeshingParameters::size; ++k) {
-    const bool nT = k == 5;
+    const bool nT = names[k] == "nT";
+    const bool isLength = k <= 1;  // yIn, yOut: metres in the CSV, chords in the picture
     const int steps = nT ? 201 : 101;
     std::vector<double> value(steps), q(steps);
     for (int s = 0; s < steps; ++s)
@@ -69,14 +69,14 @@ int main(int argc, char** argv) {
     for (int s = 0; s < steps; ++s) {
       csv << value[s] << "," << q[s] << "\n";
       if (q[s] > invalidMeshQuality)
-        plotted += std::to_string(nT ? value[s] : value[s] / (k < 2 ? chord : 1.0)) + "," + std::to_string(q[s]) + "\n";
+        plotted += std::to_string(nT ? value[s] : value[s] / (isLength ? chord : 1.0)) + "," + std::to_string(q[s]) + "\n";
       valid += q[s] > invalidMeshQuality;
       if (s > 0 && q[s] > invalidMeshQuality && q[s - 1] > invalidMeshQuality &&
           std::abs(q[s] - q[s - 1]) > largest)
         largest = std::abs(q[s] - q[s - 1]), at = value[s];
     }
-    std::printf("| %s | %d | %d | %.4f | %.6g |\n", names[k], steps, valid, largest, at);
-    script += "set xlabel " + gnuplotQuoted(std::string(names[k]) + (k < 2 ? " [chords]" : "")) + "\nplot " +
+    std::printf("| %s | %d | %d | %.4f | %.6g |\n", names[k].c_str(), steps, valid, largest, at);
+    script += "set xlabel " + gnuplotQuoted(names[k] + (isLength ? " [chords]" : "")) + "\nplot " +
               gnuplot.dataFile(plotted) + " using 1:2 with linespoints pt 7 ps 0.3\n";
     std::fflush(stdout);
   }

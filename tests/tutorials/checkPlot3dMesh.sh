@@ -6,12 +6,7 @@
 #                                   failed; 77: no plot3dToFoam
 set -uo pipefail
 case_dir="$(cd "$1" && pwd)"
-command -v plot3dToFoam > /dev/null || { echo "plot3dToFoam not installed (Debian: openfoam): skipped"; exit 77; }
-export WM_PROJECT_DIR="${WM_PROJECT_DIR:-/usr/share/openfoam}"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$work/constant" "$work/system"
-printf 'FoamFile\n{\n    version 2.0;\n    format ascii;\n    class dictionary;\n    object controlDict;\n}\napplication simpleFoam;\nstartFrom startTime;\nstartTime 0;\nstopAt endTime;\nendTime 1;\ndeltaT 1;\nwriteControl timeStep;\nwriteInterval 1;\n' > "$work/system/controlDict"
+. "$(dirname "$0")/foamScratchCase.sh" plot3dToFoam
 plot3dToFoam -case "$work" -noBlank "$case_dir/mesh/passage.xyz" > "$work/log.plot3dToFoam" 2>&1 ||
   { echo "plot3dToFoam failed:"; tail -5 "$work/log.plot3dToFoam"; exit 1; }
 cells() { grep -m1 -o 'nCells: *[0-9]*' "$1" | grep -o '[0-9]*$'; }

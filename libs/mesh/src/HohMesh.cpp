@@ -84,8 +84,9 @@ StructuredBlock algebraicOBlock(const std::vector<BladeNode>& wall, const OuterL
   return o;
 }
 
-// An H-block of uniform cells between x = xBegin and x = xEnd whose edge at x = xInterface
-// (one of the two) carries the O-block's interface nodes `interface` (bottom to top).
+// An H-block of uniform cells between x = xBegin and x = xEnd whose edge at xEnd
+// (interfaceAtEnd) or at xBegin carries the O-block's interface nodes `interface` (bottom
+// to top).
 StructuredBlock hBlock(const std::string& name, double xBegin, double xEnd, bool interfaceAtEnd,
                        const std::vector<Eigen::Vector2d>& interface, double pitch) {
   const int intervals = static_cast<int>(interface.size()) - 1;
