@@ -67,7 +67,7 @@ void printParameters(const char* label, const Eigen::VectorXd& v) {
   const auto values = toMeshingParameters(v).toArray();
   std::printf("%s:", label);
   for (int k = 0; k < MeshingParameters::size; ++k)
-    std::printf(" %s %.6g%s", names[k].c_str(), values[static_cast<std::size_t>(k)], k <= 1 ? "c" : "");
+    std::printf(" %s %.6g%s", names[k].c_str(), values[static_cast<std::size_t>(k)], MeshingParameters::table()[k].length ? "c" : "");
   std::printf("\n");
 }
 

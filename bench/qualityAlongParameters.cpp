@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
                        "set datafile separator ','\nset key off\nset grid\nset ylabel 'Q'\n";
   for (int k = 0; k < MeshingParameters::size; ++k) {
     const bool nT = names[k] == "nT";
-    const bool isLength = k <= 1;  // yIn, yOut: metres in the CSV, chords in the picture
+    const bool isLength = MeshingParameters::table()[k].length;  // yIn, yOut: metres in the CSV, chords in the picture
     const int steps = nT ? 201 : 101;
     std::vector<double> value(steps), q(steps);
     for (int s = 0; s < steps; ++s)

@@ -19,7 +19,8 @@ BoxProblem meshingParameterProblem(double chord) {
   const auto& names = MeshingParameters::names();
   problem.names.assign(names.begin(), names.end());
   problem.integer.assign(MeshingParameters::size, false);
-  for (int k = 0; k < MeshingParameters::size; ++k) problem.integer[k] = names[k] == "nT";
+  for (int k = 0; k < MeshingParameters::size; ++k)
+    problem.integer[k] = MeshingParameters::table()[k].integer;
   return problem;
 }
 

@@ -13,16 +13,17 @@ namespace {
 
 // Reads the keys of a meshDict into `p` (those present), lengths scaled by `chord`.
 void readEntries(const Dictionary& dict, double chord, MeshingParameters& p) {
-  const auto& names = MeshingParameters::names();
+  const auto& table = MeshingParameters::table();
   auto v = p.toArray();
   for (int k = 0; k < MeshingParameters::size; ++k) {
-    if (!dict.has(names[k])) continue;
-    if (k <= 1)
-      v[k] = dict.length(names[k], chord);
-    else if (names[k] == "nT")
-      v[k] = static_cast<double>(dict.integer(names[k]));
+    const MeshingParameterInfo& info = table[k];
+    if (!dict.has(info.name)) continue;
+    if (info.length)
+      v[k] = dict.length(info.name, chord);
+    else if (info.integer)
+      v[k] = static_cast<double>(dict.integer(info.name));
     else
-      v[k] = dict.scalar(names[k]);
+      v[k] = dict.scalar(info.name);
   }
   p = MeshingParameters::fromArray(v);
 }
@@ -62,18 +63,40 @@ MeshingParameters MeshingParameters::fromArray(const std::array<double, size>& v
   return p;
 }
 
+const std::array<MeshingParameterInfo, MeshingParameters::size>& MeshingParameters::table() {
+  // name, lower, upper, length, integer (method.md section 1)
+  static const std::array<MeshingParameterInfo, size> rows{{
+      {"yIn", -0.5, 0.5, true, false},
+      {"yOut", -0.5, 0.5, true, false},
+      {"alphaCamber", 0.0, 1.0, false, false},
+      {"betaIn", 0.1, 0.9, false, false},
+      {"betaOut", 0.1, 0.9, false, false},
+      {"nT", 100.0, 1000.0, false, true},
+      {"gammaLE", 0.0, 5.0, false, false},
+      {"gammaTE", 0.0, 5.0, false, false},
+  }};
+  return rows;
+}
+
 const std::array<std::string, MeshingParameters::size>& MeshingParameters::names() {
-  static const std::array<std::string, size> n{"yIn",  "yOut", "alphaCamber", "betaIn",
-                                               "betaOut", "nT", "gammaLE",     "gammaTE"};
+  static const std::array<std::string, size> n = [] {
+    std::array<std::string, size> list;
+    for (int k = 0; k < size; ++k) list[k] = table()[k].name;
+    return list;
+  }();
   return n;
 }
 
 std::array<double, MeshingParameters::size> MeshingParameters::lowerBounds(double chord) {
-  return {-0.5 * chord, -0.5 * chord, 0.0, 0.1, 0.1, 100.0, 0.0, 0.0};
+  std::array<double, size> v;
+  for (int k = 0; k < size; ++k) v[k] = table()[k].lower * (table()[k].length ? chord : 1.0);
+  return v;
 }
 
 std::array<double, MeshingParameters::size> MeshingParameters::upperBounds(double chord) {
-  return {0.5 * chord, 0.5 * chord, 1.0, 0.9, 0.9, 1000.0, 5.0, 5.0};
+  std::array<double, size> v;
+  for (int k = 0; k < size; ++k) v[k] = table()[k].upper * (table()[k].length ? chord : 1.0);
+  return v;
 }
 
 MeshingParameters clipToRange(const MeshingParameters& p, double chord,
@@ -104,10 +127,11 @@ std::string meshDictXml(const MeshingParameters& p) {
   dict.setComment("passageMesh meshing parameters; yIn, yOut in metres. See docs/case-format.md.");
   const auto v = p.toArray();
   for (int k = 0; k < MeshingParameters::size; ++k) {
-    if (MeshingParameters::names()[k] == "nT")
-      dict.set("nT", std::to_string(p.nT));
+    const MeshingParameterInfo& info = MeshingParameters::table()[k];
+    if (info.integer)
+      dict.set(info.name, std::to_string(std::lround(v[k])));
     else
-      dict.set(MeshingParameters::names()[k], v[k]);
+      dict.set(info.name, v[k]);
   }
   return dict.toXml();
 }

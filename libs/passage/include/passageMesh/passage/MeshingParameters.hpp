@@ -8,6 +8,15 @@
 
 namespace passageMesh {
 
+// One row of the meshing-parameter table: everything that reads, writes, clips, searches or
+// scales a parameter takes its name, range and kind from here.
+struct MeshingParameterInfo {
+  const char* name;
+  double lower, upper;  // the method's range; in chords where `length`
+  bool length;          // a length: metres in files, scaled by the chord
+  bool integer;         // a count: rounded to the nearest integer
+};
+
 struct MeshingParameters {
   static constexpr int size = 8;
 
@@ -27,8 +36,10 @@ struct MeshingParameters {
   std::array<double, size> toArray() const;
   static MeshingParameters fromArray(const std::array<double, size>& v);  // nT rounded
   static const std::array<std::string, size>& names();
-  // The method's range box for a chord C: yIn, yOut in [-0.5C, 0.5C], alphaCamber [0, 1],
+  // The table, in the order above: yIn, yOut in [-0.5C, 0.5C], alphaCamber [0, 1],
   // betaIn, betaOut [0.1, 0.9], nT [100, 1000], gammaLe, gammaTe [0, 5].
+  static const std::array<MeshingParameterInfo, size>& table();
+  // The range box for a chord C (lengths in metres).
   static std::array<double, size> lowerBounds(double chord);
   static std::array<double, size> upperBounds(double chord);
 };

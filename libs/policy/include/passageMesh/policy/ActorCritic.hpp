@@ -1,0 +1,58 @@
+#pragma once
+// The single-step actor-critic learner (method.md section 6): the critic Q(s, a) fitted to
+// the rewards by mean squared error, the actor pi(s) moved up the critic's gradient
+// (deterministic policy gradient), each with its own Adam optimiser. LibTorch, CPU, float32,
+// one thread; the LibTorch types stay inside the .cpp (pointer to implementation).
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+
+#include "passageMesh/policy/NetworkLayout.hpp"
+#include "passageMesh/policy/ReplayBuffer.hpp"
+
+namespace torch::serialize {
+class OutputArchive;
+class InputArchive;
+}  // namespace torch::serialize
+
+namespace passageMesh {
+
+struct LearningRates {
+  double actor = 1e-4;   // the paper's Adam learning rate for both
+  double critic = 1e-4;
+};
+
+class ActorCritic {
+ public:
+  // Weights initialised by LibTorch's default rule from `seed`.
+  ActorCritic(const NetworkLayout& layout, const LearningRates& rates, std::uint64_t seed);
+  ~ActorCritic();
+  ActorCritic(ActorCritic&&) noexcept;
+  ActorCritic& operator=(ActorCritic&&) noexcept;
+
+  const NetworkLayout& layout() const;
+
+  // pi(s) for each row of `states`.
+  PolicyBatch act(const PolicyBatch& states) const;
+  // Q(s, a) for each row.
+  Eigen::VectorXd value(const PolicyBatch& states, const PolicyBatch& actions) const;
+
+  // One Adam step of the critic on mean((Q(s, a) - r)^2); returns that loss before the step.
+  double updateCritic(const PolicyBatch& states, const PolicyBatch& actions,
+                      const Eigen::VectorXd& rewards);
+  // One Adam step of the actor on -mean(Q(s, pi(s))); returns mean Q(s, pi(s)) before it.
+  double updateActor(const PolicyBatch& states);
+
+  // Both networks and both optimisers' states, for checkpoints.
+  void save(torch::serialize::OutputArchive& archive) const;
+  void load(torch::serialize::InputArchive& archive);
+  // The actor alone, with LibTorch's own serialisation (Python: torch.jit.load), written
+  // atomically (PolicyFile.hpp writes it with its description).
+  void saveActor(const std::filesystem::path& file) const;
+
+ private:
+  struct Networks;
+  std::unique_ptr<Networks> networks_;
+};
+
+}  // namespace passageMesh

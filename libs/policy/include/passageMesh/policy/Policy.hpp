@@ -1,0 +1,56 @@
+#pragma once
+// A trained policy on disk and in use (docs/file-formats.md "Policy files"):
+//   NAME.xml  its description: format version, the actor file's name, the layers, the
+//             state and action names in order with the ranges that scale them to [-1, 1]
+//   NAME.pt   the actor's weights, LibTorch's own serialisation; Python reads them by name
+//             with torch.jit.load("NAME.pt").state_dict() (layers.0.weight, ...)
+// policyMesh loads it and maps a passage to its meshing parameters in one forward pass.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "passageMesh/blade/BladeParameters.hpp"
+#include "passageMesh/passage/MeshingParameters.hpp"
+#include "passageMesh/passage/PassageCondition.hpp"
+#include "passageMesh/policy/ActorCritic.hpp"
+#include "passageMesh/policy/PolicyScaling.hpp"
+
+namespace passageMesh {
+
+// What policyTrain records beside the weights.
+struct PolicyProvenance {
+  long episodes = 0;              // episodes trained when these weights were taken
+  double validationMeanReward = 0;  // their validation score
+  std::string command;            // how they were trained
+};
+
+// Writes NAME.pt (the learner's actor) and NAME.xml, each atomically, the .pt first.
+void writePolicyFiles(const std::filesystem::path& xmlFile, const ActorCritic& learner,
+                      const PolicyProvenance& provenance);
+
+class Policy {
+ public:
+  // Reads NAME.xml and the actor file it names. A missing or corrupt file, or a layout or
+  // scaling that is not this build's, is an InputError naming the file.
+  static Policy load(const std::filesystem::path& xmlFile);
+  ~Policy();
+  Policy(Policy&&) noexcept;
+  Policy& operator=(Policy&&) noexcept;
+
+  PolicyAction act(const PolicyState& state) const;  // one forward pass, no noise
+  MeshingParameters meshingParameters(const BladeParameters& blade,
+                                      const PassageCondition& condition) const;
+  const NetworkLayout& layout() const;
+  const PolicyProvenance& provenance() const;
+
+ private:
+  Policy();
+  struct Actor;
+  std::unique_ptr<Actor> actor_;
+};
+
+// etc/policy/policy.xml (the shipped policy).
+std::filesystem::path defaultPolicyFile();
+
+}  // namespace passageMesh

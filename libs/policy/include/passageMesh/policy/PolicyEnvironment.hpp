@@ -1,0 +1,51 @@
+#pragma once
+// What the single-step actor-critic learns from: episodes that each give a state and a
+// reward for any action (method.md section 6). An episode is named by a stream seed and its
+// index, and drawing it again gives the same task on every run, thread and MPI rank, which
+// is what keeps training independent of where rollouts run.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "passageMesh/blade/BladeSampler.hpp"
+
+namespace passageMesh {
+
+struct EpisodeTask {
+  std::vector<double> state;  // in [-1, 1]
+  // The reward of an action in [-1, 1]^actionSize; callable from any thread.
+  std::function<double(const std::vector<double>& action)> reward;
+};
+
+class PolicyEnvironment {
+ public:
+  virtual ~PolicyEnvironment() = default;
+  virtual int stateSize() const = 0;
+  virtual int actionSize() const = 0;
+  virtual EpisodeTask draw(std::uint64_t seed, std::uint64_t episode) const = 0;
+};
+
+// The random stream `stream` of episode `episode` under `seed`: independent streams
+// without a shared generator (seeded through std::seed_seq, deterministic everywhere).
+std::mt19937_64 episodeRandom(std::uint64_t seed, std::uint64_t episode, std::uint32_t stream);
+// A standard normal variate from uniform01 (Box-Muller), the same on every platform.
+double standardNormal(std::mt19937_64& rng);
+
+// Blade passages from the sampler (PassageSampler.hpp: a valid blade from the BSP box, a
+// condition from PassageConditionRange); the reward is the mesh quality Q of the HOH mesh
+// built with the action's meshing parameters (-1 for an invalid mesh).
+class PassageEnvironment final : public PolicyEnvironment {
+ public:
+  explicit PassageEnvironment(BladeParameterRange range);
+  PassageEnvironment();  // etc/bladeParameterRange.xml
+  int stateSize() const override;
+  int actionSize() const override;
+  EpisodeTask draw(std::uint64_t seed, std::uint64_t episode) const override;
+
+ private:
+  BladeParameterRange range_;
+};
+
+}  // namespace passageMesh

@@ -1,0 +1,34 @@
+#pragma once
+// The actor and critic networks as LibTorch modules (method.md section 6): fully connected
+// layers with Leaky ReLU between them, tanh on the actor's output. This header includes
+// <torch/torch.h> (about 25 s to compile): only the policy library's sources and its tests
+// include it; the rest of the project sees ActorCritic.hpp and Policy.hpp.
+//
+// Parameter names, as Python's torch.jit.load shows them: layers.0.weight, layers.0.bias,
+// layers.2.weight, ... (the odd indices are the activations, which have no parameters).
+#include <torch/torch.h>
+
+#include <vector>
+
+#include "passageMesh/policy/NetworkLayout.hpp"
+
+namespace passageMesh {
+
+// A fully connected network: input, hidden layers, output; tanh on the output if asked.
+class FullyConnectedImpl : public torch::nn::Module {
+ public:
+  FullyConnectedImpl(int inputs, const std::vector<int>& hidden, int outputs, double leakySlope,
+                     bool tanhOutput);
+  torch::Tensor forward(torch::Tensor x);
+
+ private:
+  torch::nn::Sequential layers_;
+};
+TORCH_MODULE(FullyConnected);
+
+// pi(s): state -> action in [-1, 1].
+FullyConnected makeActor(const NetworkLayout& layout);
+// Q(s, a): the concatenated state and action -> expected reward.
+FullyConnected makeCritic(const NetworkLayout& layout);
+
+}  // namespace passageMesh

@@ -1,0 +1,52 @@
+#pragma once
+// The policy's state and action, both scaled to [-1, 1] (method.md section 6; docs/policy.md).
+//
+// State (24 values): the blade's shape parameters without position and size (xLe, yLe and
+// chord are left out: Q does not change when a passage is moved or scaled, method.md
+// section 1), the camber angles relative to the stagger as etc/bladeParameterRange.xml
+// gives them, then the condition in chords: pitch, xIn, xOut, nO, firstCellHeight. Each
+// value is mapped linearly from its range (the BSP box, PassageConditionRange) to [-1, 1].
+// Action (8 values): the meshing parameters in MeshingParameters::table() order, each
+// mapped linearly from its range (lengths in chords) to [-1, 1].
+#include <array>
+#include <string>
+#include <vector>
+
+#include "passageMesh/blade/BladeParameters.hpp"
+#include "passageMesh/blade/BladeSampler.hpp"
+#include "passageMesh/passage/MeshingParameters.hpp"
+#include "passageMesh/passage/PassageCondition.hpp"
+
+namespace passageMesh {
+
+constexpr int policyStateSize = 24;
+constexpr int policyActionSize = MeshingParameters::size;
+using PolicyState = std::array<double, policyStateSize>;
+using PolicyAction = std::array<double, policyActionSize>;
+
+// The state's names in order ("stagger", ..., "pitch", ..., "firstCellHeight").
+const std::array<std::string, policyStateSize>& policyStateNames();
+
+// The range of each state value in its own units (range coordinates of the BSP box, then
+// the condition in chords; etc/bladeParameterRange.xml, PassageConditionRange): the value
+// at `lower` scales to -1, at `upper` to +1.
+struct PolicyStateBounds {
+  PolicyState lower, upper;
+};
+PolicyStateBounds policyStateBounds(const BladeParameterRange& range);
+
+// The state of a passage, scaled by `range` (the BSP box the blade sampler draws from).
+PolicyState policyState(const BladeParameters& blade, const PassageCondition& condition,
+                        const BladeParameterRange& range);
+// The same with etc/bladeParameterRange.xml (read once).
+PolicyState policyState(const BladeParameters& blade, const PassageCondition& condition);
+
+// One line per state value outside [-1, 1]: the policy was not trained there.
+std::vector<std::string> stateOutsideTraining(const PolicyState& state);
+
+// The action of a set of meshing parameters for a blade of this chord, and back. Action
+// values outside [-1, 1] are clipped; nT is rounded.
+PolicyAction policyAction(const MeshingParameters& parameters, double chord);
+MeshingParameters meshingParametersOf(const PolicyAction& action, double chord);
+
+}  // namespace passageMesh

@@ -1,0 +1,50 @@
+#pragma once
+// Everything policyTrain can be told, read from system/policyTrainDict.xml
+// (docs/case-format.md). The defaults are the paper's settings (method.md section 6)
+// where it gives them.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "passageMesh/policy/ActorCritic.hpp"
+#include "passageMesh/policy/NetworkLayout.hpp"
+
+namespace passageMesh {
+
+struct PolicyTrainOptions {
+  long episodes = 100000;         // episodes in the whole run (a resumed run continues to it)
+  int batchEpisodes = 32;         // rollouts per batch: one actor snapshot, built in parallel
+  int minibatch = 100;            // replay minibatch per update (paper: 100)
+  LearningRates learningRates;    // Adam (paper: 1e-4 for both)
+  std::vector<int> hidden{512, 256, 256, 128};  // hidden layers of both networks (paper)
+  double leakySlope = 0.01;
+  int criticUpdatesPerEpisode = 1;  // paper: 1
+  int actorUpdateEvery = 2;         // episodes per actor update (paper: 2)
+  // Exploration noise on the actions (scaled units): sigma = noiseStartSigma for the first
+  // noiseStartEpisodes, then noiseAmplitude (cos(2 pi episode / noisePeriod) + 1)
+  // (paper: 1, 1000, 0.25, 1000).
+  double noiseStartSigma = 1.0;
+  long noiseStartEpisodes = 1000;
+  double noiseAmplitude = 0.25;
+  long noisePeriod = 1000;
+  long bufferCapacity = 1000000;  // replay buffer episodes (the newest kept)
+  long validationEvery = 5000;    // episodes between validations (noise-free policy)
+  int validationPassages = 50;    // fixed sampler passages of the validation set
+  std::uint64_t validationSeed = 20261202;  // their stream (not the training stream)
+  long checkpointEvery = 5000;    // episodes between checkpoints
+  long logEvery = 1000;           // episodes between learning-curve rows
+  std::uint64_t seed = 1;         // weights, episodes, noise and minibatches
+  int threads = 0;                // rollout threads per process (0 = all cores)
+
+  // The exploration sigma at a (0-based) episode.
+  double noiseSigma(long episode) const;
+  NetworkLayout layout(int stateSize, int actionSize) const;
+};
+
+// A missing file gives the defaults; a missing key keeps its default; an unknown key, a
+// malformed or out-of-range value is an InputError naming the file and the line.
+PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file);
+// The dictionary's text with every key (17 significant digits).
+std::string policyTrainDictXml(const PolicyTrainOptions& options);
+
+}  // namespace passageMesh

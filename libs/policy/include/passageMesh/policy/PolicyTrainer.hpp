@@ -1,0 +1,99 @@
+#pragma once
+// The single-step actor-critic training loop (method.md section 6; docs/policy.md).
+//
+// Episodes run in synchronous batches of batchEpisodes: the batch's tasks are drawn from
+// their own random streams (PolicyEnvironment), the actor as it stands gives their actions
+// plus Gaussian noise from each episode's own noise stream, the rewards are computed by the
+// RolloutEvaluator (threads or MPI ranks), and then, episode by episode in order, the
+// episode enters the replay buffer and the learner takes its updates (critic every
+// episode, actor every actorUpdateEvery). Nothing depends on the number of threads or
+// ranks, and a checkpoint taken between batches resumes to the same weights bit for bit.
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "passageMesh/policy/ActorCritic.hpp"
+#include "passageMesh/policy/PolicyEnvironment.hpp"
+#include "passageMesh/policy/PolicyTrainOptions.hpp"
+#include "passageMesh/policy/ReplayBuffer.hpp"
+#include "passageMesh/policy/RolloutEvaluator.hpp"
+
+namespace passageMesh {
+
+// A row of the learning curve, every logEvery episodes.
+struct LearningRecord {
+  long episode = 0;
+  double meanReward = 0;   // of the last logEvery episodes (with exploration noise)
+  double validFraction = 0;  // of those, the share with reward > -1
+  double criticLoss = 0;   // mean over the updates since the last row
+  double sigma = 0;        // exploration noise at this episode
+  double seconds = 0;      // training time so far (all runs of a resumed training)
+};
+
+// A validation: the noise-free policy on the fixed validation passages.
+struct ValidationRecord {
+  long episode = 0;
+  double meanReward = 0;
+  double medianReward = 0;
+  int valid = 0;  // passages with a valid mesh
+  int passages = 0;
+};
+
+class PolicyTrainer {
+ public:
+  PolicyTrainer(const PolicyTrainOptions& options, const PolicyEnvironment& environment,
+                RolloutEvaluator& rollouts);
+
+  // Continues from a checkpoint written by saveCheckpoint with the same layout and seed;
+  // an unreadable or mismatched checkpoint is an InputError naming the file.
+  void resume(const std::filesystem::path& checkpoint);
+
+  struct Events {
+    std::function<void(const PolicyTrainer&)> afterBatch;        // progress lines
+    std::function<void(const PolicyTrainer&)> newBestValidation;  // save the policy
+    std::function<void(const PolicyTrainer&)> checkpointDue;      // save a checkpoint
+  };
+  // Trains until options.episodes or until *stop is set (checked between batches).
+  // Returns true when all episodes are done.
+  bool run(const std::atomic<bool>* stop, const Events& events);
+
+  // Atomic (a temporary file renamed into place).
+  void saveCheckpoint(const std::filesystem::path& file) const;
+
+  const PolicyTrainOptions& options() const { return options_; }
+  long episode() const { return episode_; }
+  const ActorCritic& learner() const { return learner_; }
+  const ReplayBuffer& buffer() const { return buffer_; }
+  const std::vector<LearningRecord>& learningCurve() const { return learning_; }
+  const std::vector<ValidationRecord>& validationCurve() const { return validation_; }
+  // Best validation mean reward so far (-infinity before the first).
+  double bestValidation() const { return bestValidation_; }
+  double secondsTrained() const;  // this run's time plus that of the runs before a resume
+
+ private:
+  void runBatch();
+  void learnFrom(const std::vector<double>& state, const std::vector<double>& action, double reward);
+  void validate();
+
+  PolicyTrainOptions options_;
+  const PolicyEnvironment& environment_;
+  RolloutEvaluator& rollouts_;
+  ActorCritic learner_;
+  ReplayBuffer buffer_;
+  std::mt19937_64 minibatchRandom_;
+  long episode_ = 0;
+  std::vector<LearningRecord> learning_;
+  std::vector<ValidationRecord> validation_;
+  double bestValidation_;
+  double lossSum_ = 0;
+  long lossCount_ = 0;
+  double secondsBefore_ = 0;  // from the checkpoint
+  std::chrono::steady_clock::time_point start_;
+  std::vector<EpisodeTask> validationTasks_;
+};
+
+}  // namespace passageMesh

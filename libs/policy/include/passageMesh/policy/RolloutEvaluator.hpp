@@ -1,0 +1,40 @@
+#pragma once
+// Where the rewards of a batch of episodes are computed: threads of this process
+// (ThreadRollouts) or MPI ranks (MpiRollouts.hpp). Either way episode i's reward depends on
+// its task and action only, so training gives the same weights wherever rollouts run.
+#include <cstdint>
+#include <vector>
+
+#include "passageMesh/policy/PolicyEnvironment.hpp"
+#include "passageMesh/policy/ReplayBuffer.hpp"
+
+namespace passageMesh {
+
+class RolloutEvaluator {
+ public:
+  virtual ~RolloutEvaluator() = default;
+  // The reward of each task under the action in the same row. `tasks` are episodes
+  // first, first + 1, ... of stream `seed` (a remote rank draws them again from that).
+  virtual std::vector<double> rewards(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
+                                      std::uint64_t seed, std::uint64_t first) = 0;
+  // Processes and threads taking part, for the progress line.
+  virtual std::string description() const = 0;
+};
+
+class ThreadRollouts final : public RolloutEvaluator {
+ public:
+  explicit ThreadRollouts(int threads);  // 0 = all cores
+  std::vector<double> rewards(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
+                              std::uint64_t seed, std::uint64_t first) override;
+  std::string description() const override;
+
+ private:
+  int threads_;
+};
+
+// Rewards of tasks[i] for indices i where i % stride == offset (the others left 0), on
+// `threads` threads: the shared loop of both evaluators.
+void rewardsOfSlice(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions, int offset,
+                    int stride, int threads, std::vector<double>& rewards);
+
+}  // namespace passageMesh

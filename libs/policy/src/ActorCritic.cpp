@@ -1,0 +1,110 @@
+#include "passageMesh/policy/ActorCritic.hpp"
+
+#include <sstream>
+
+#include "passageMesh/policy/PolicyNetworks.hpp"
+#include "TorchTensors.hpp"
+
+namespace passageMesh {
+
+std::string NetworkLayout::hiddenText() const {
+  std::ostringstream text;
+  for (std::size_t k = 0; k < hidden.size(); ++k) text << (k ? " " : "") << hidden[k];
+  return text.str();
+}
+
+struct ActorCritic::Networks {
+  Networks(const NetworkLayout& l, const LearningRates& rates)
+      : layout(l),
+        actor(makeActor(l)),
+        critic(makeCritic(l)),
+        actorOptimizer(actor->parameters(), torch::optim::AdamOptions(rates.actor)),
+        criticOptimizer(critic->parameters(), torch::optim::AdamOptions(rates.critic)) {}
+
+  NetworkLayout layout;
+  FullyConnected actor;
+  FullyConnected critic;
+  torch::optim::Adam actorOptimizer;
+  torch::optim::Adam criticOptimizer;
+};
+
+ActorCritic::ActorCritic(const NetworkLayout& layout, const LearningRates& rates, std::uint64_t seed) {
+  // The networks are built right after seeding LibTorch's generator, so their first
+  // weights depend on the seed only.
+  torch::manual_seed(seed);
+  networks_ = std::make_unique<Networks>(layout, rates);
+}
+
+ActorCritic::~ActorCritic() = default;
+ActorCritic::ActorCritic(ActorCritic&&) noexcept = default;
+ActorCritic& ActorCritic::operator=(ActorCritic&&) noexcept = default;
+
+const NetworkLayout& ActorCritic::layout() const { return networks_->layout; }
+
+PolicyBatch ActorCritic::act(const PolicyBatch& states) const {
+  torch::NoGradGuard noGrad;
+  return batchOf(networks_->actor->forward(tensorOf(states)));
+}
+
+Eigen::VectorXd ActorCritic::value(const PolicyBatch& states, const PolicyBatch& actions) const {
+  torch::NoGradGuard noGrad;
+  const torch::Tensor q =
+      networks_->critic->forward(torch::cat({tensorOf(states), tensorOf(actions)}, 1));
+  return batchOf(q).col(0);
+}
+
+double ActorCritic::updateCritic(const PolicyBatch& states, const PolicyBatch& actions,
+                                 const Eigen::VectorXd& rewards) {
+  Networks& n = *networks_;
+  const torch::Tensor input = torch::cat({tensorOf(states), tensorOf(actions)}, 1);
+  const torch::Tensor target = tensorOf(PolicyBatch(rewards));
+  n.criticOptimizer.zero_grad();
+  torch::Tensor loss = torch::mse_loss(n.critic->forward(input), target);
+  loss.backward();
+  n.criticOptimizer.step();
+  return loss.item<double>();
+}
+
+double ActorCritic::updateActor(const PolicyBatch& states) {
+  Networks& n = *networks_;
+  const torch::Tensor s = tensorOf(states);
+  n.actorOptimizer.zero_grad();
+  const torch::Tensor q = n.critic->forward(torch::cat({s, n.actor->forward(s)}, 1)).mean();
+  torch::Tensor loss = -q;
+  loss.backward();
+  n.actorOptimizer.step();
+  // The backward pass also left gradients in the critic; its own step clears them first.
+  return q.item<double>();
+}
+
+void ActorCritic::save(torch::serialize::OutputArchive& archive) const {
+  const Networks& n = *networks_;
+  torch::serialize::OutputArchive actor, critic, actorOptimizer, criticOptimizer;
+  n.actor->save(actor);
+  n.critic->save(critic);
+  n.actorOptimizer.save(actorOptimizer);
+  n.criticOptimizer.save(criticOptimizer);
+  archive.write("actor", actor);
+  archive.write("critic", critic);
+  archive.write("actorOptimizer", actorOptimizer);
+  archive.write("criticOptimizer", criticOptimizer);
+}
+
+void ActorCritic::load(torch::serialize::InputArchive& archive) {
+  Networks& n = *networks_;
+  torch::serialize::InputArchive actor, critic, actorOptimizer, criticOptimizer;
+  archive.read("actor", actor);
+  archive.read("critic", critic);
+  archive.read("actorOptimizer", actorOptimizer);
+  archive.read("criticOptimizer", criticOptimizer);
+  n.actor->load(actor);
+  n.critic->load(critic);
+  n.actorOptimizer.load(actorOptimizer);
+  n.criticOptimizer.load(criticOptimizer);
+}
+
+void ActorCritic::saveActor(const std::filesystem::path& file) const {
+  saveModuleAtomically(*networks_->actor, file);
+}
+
+}  // namespace passageMesh

@@ -1,0 +1,181 @@
+#include "passageMesh/policy/Policy.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "passageMesh/core/AtomicFile.hpp"
+#include "passageMesh/core/Dictionary.hpp"
+#include "passageMesh/core/EtcFiles.hpp"
+#include "passageMesh/core/InputError.hpp"
+#include "passageMesh/policy/PolicyNetworks.hpp"
+#include "TorchTensors.hpp"
+
+namespace passageMesh {
+
+namespace {
+
+constexpr const char* policyFormat = "passageMesh policy 1";
+
+const std::vector<std::string>& policyKeys() {
+  static const std::vector<std::string> keys{
+      "format", "actor", "hiddenLayers", "leakySlope", "layers", "stateNames", "stateLower",
+      "stateUpper", "actionNames", "actionLower", "actionUpper", "trainedEpisodes",
+      "validationMeanReward", "command"};
+  return keys;
+}
+
+template <typename Container>
+std::string joined(const Container& values) {
+  std::ostringstream s;
+  s.precision(17);
+  bool first = true;
+  for (const auto& v : values) {
+    s << (first ? "" : " ") << v;
+    first = false;
+  }
+  return s.str();
+}
+
+struct PolicyDescription {
+  PolicyStateBounds state = policyStateBounds(BladeParameterRange::readDefault());
+  std::array<double, policyActionSize> actionLower{}, actionUpper{};
+  std::array<std::string, policyActionSize> actionNames;
+  PolicyDescription() {
+    for (int k = 0; k < policyActionSize; ++k) {
+      actionLower[k] = MeshingParameters::table()[k].lower;
+      actionUpper[k] = MeshingParameters::table()[k].upper;
+      actionNames[k] = MeshingParameters::table()[k].name;
+    }
+  }
+};
+
+// Reads a list of numbers and checks it against this build's values.
+void expectNumbers(const Dictionary& d, const std::string& key, const double* expected, int count) {
+  std::istringstream in(d.text(key));
+  for (int k = 0; k < count; ++k) {
+    double v;
+    if (!(in >> v) || std::abs(v - expected[k]) > 1e-12 * std::max(1.0, std::abs(expected[k])))
+      throw InputError(d.source(), d.line(key),
+                       "<" + key + "> does not match this build's scaling (entry " + std::to_string(k + 1) +
+                           "); the policy was trained with other ranges");
+  }
+}
+
+void expectText(const Dictionary& d, const std::string& key, const std::string& expected) {
+  if (d.text(key) != expected)
+    throw InputError(d.source(), d.line(key), "<" + key + "> is '" + d.text(key) + "', this build expects '" +
+                                                 expected + "'");
+}
+
+}  // namespace
+
+void writePolicyFiles(const std::filesystem::path& xmlFile, const ActorCritic& learner,
+                      const PolicyProvenance& provenance) {
+  std::filesystem::path actorFile = xmlFile;
+  actorFile.replace_extension(".pt");
+  learner.saveActor(actorFile);
+  const PolicyDescription description;
+  const NetworkLayout& layout = learner.layout();
+  Dictionary d("policy");
+  d.setComment(
+      "passageMesh trained policy (docs/file-formats.md). The actor maps the state, scaled to "
+      "[-1, 1] linearly from [stateLower, stateUpper], to the action in [-1, 1], scaled to the "
+      "meshing parameters from [actionLower, actionUpper] (lengths in chords).");
+  d.set("format", policyFormat);
+  d.set("actor", actorFile.filename().string());
+  d.set("hiddenLayers", layout.hiddenText());
+  d.set("leakySlope", layout.leakySlope);
+  d.set("layers", "layers.N.weight and layers.N.bias for N = 0, 2, 4, ...: Linear; odd N: LeakyReLU; "
+                  "tanh on the output");
+  d.set("stateNames", joined(policyStateNames()));
+  d.set("stateLower", joined(description.state.lower));
+  d.set("stateUpper", joined(description.state.upper));
+  d.set("actionNames", joined(description.actionNames));
+  d.set("actionLower", joined(description.actionLower));
+  d.set("actionUpper", joined(description.actionUpper));
+  d.set("trainedEpisodes", std::to_string(provenance.episodes));
+  d.set("validationMeanReward", provenance.validationMeanReward);
+  d.set("command", provenance.command);
+  d.write(xmlFile);
+}
+
+struct Policy::Actor {
+  NetworkLayout layout;
+  FullyConnected network{nullptr};
+  PolicyProvenance provenance;
+};
+
+Policy::Policy() : actor_(std::make_unique<Actor>()) {}
+Policy::~Policy() = default;
+Policy::Policy(Policy&&) noexcept = default;
+Policy& Policy::operator=(Policy&&) noexcept = default;
+
+Policy Policy::load(const std::filesystem::path& xmlFile) {
+  if (!std::filesystem::exists(xmlFile)) throw InputError(xmlFile.string(), 0, "no such policy file");
+  const Dictionary d = Dictionary::read(xmlFile, "policy", policyKeys());
+  d.require(policyKeys());
+  expectText(d, "format", policyFormat);
+  const PolicyDescription description;
+  expectText(d, "stateNames", joined(policyStateNames()));
+  expectText(d, "actionNames", joined(description.actionNames));
+  expectNumbers(d, "stateLower", description.state.lower.data(), policyStateSize);
+  expectNumbers(d, "stateUpper", description.state.upper.data(), policyStateSize);
+  expectNumbers(d, "actionLower", description.actionLower.data(), policyActionSize);
+  expectNumbers(d, "actionUpper", description.actionUpper.data(), policyActionSize);
+
+  Policy policy;
+  Actor& a = *policy.actor_;
+  a.layout.stateSize = policyStateSize;
+  a.layout.actionSize = policyActionSize;
+  a.layout.leakySlope = d.scalar("leakySlope");
+  a.layout.hidden.clear();
+  std::istringstream widths(d.text("hiddenLayers"));
+  for (int w; widths >> w;) {
+    if (w < 1) throw InputError(d.source(), d.line("hiddenLayers"), "<hiddenLayers> expects positive widths");
+    a.layout.hidden.push_back(w);
+  }
+  if (a.layout.hidden.empty() || !widths.eof())
+    throw InputError(d.source(), d.line("hiddenLayers"), "<hiddenLayers> expects layer widths, e.g. \"512 256 256 128\"");
+  a.provenance.episodes = d.integer("trainedEpisodes");
+  a.provenance.validationMeanReward = d.scalar("validationMeanReward");
+  a.provenance.command = d.text("command");
+
+  const std::filesystem::path actorFile = xmlFile.parent_path() / d.text("actor");
+  if (!std::filesystem::exists(actorFile))
+    throw InputError(d.source(), d.line("actor"), "the actor file " + actorFile.string() + " does not exist");
+  a.network = makeActor(a.layout);
+  try {
+    torch::serialize::InputArchive archive;
+    archive.load_from(actorFile.string());
+    a.network->load(archive);
+  } catch (const std::exception& e) {
+    std::string what = e.what();
+    what = what.substr(0, what.find('\n'));
+    throw InputError(actorFile.string(), 0, "not an actor of the layout " + xmlFile.filename().string() +
+                                                " describes (" + what + ")");
+  }
+  a.network->eval();
+  return policy;
+}
+
+PolicyAction Policy::act(const PolicyState& state) const {
+  torch::NoGradGuard noGrad;
+  PolicyBatch s(1, policyStateSize);
+  for (int k = 0; k < policyStateSize; ++k) s(0, k) = state[k];
+  const PolicyBatch a = batchOf(actor_->network->forward(tensorOf(s)));
+  PolicyAction action;
+  for (int k = 0; k < policyActionSize; ++k) action[k] = a(0, k);
+  return action;
+}
+
+MeshingParameters Policy::meshingParameters(const BladeParameters& blade,
+                                            const PassageCondition& condition) const {
+  return meshingParametersOf(act(policyState(blade, condition)), blade.chord);
+}
+
+const NetworkLayout& Policy::layout() const { return actor_->layout; }
+const PolicyProvenance& Policy::provenance() const { return actor_->provenance; }
+
+std::filesystem::path defaultPolicyFile() { return findEtcFile("policy/policy.xml"); }
+
+}  // namespace passageMesh

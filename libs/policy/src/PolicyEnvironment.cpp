@@ -1,0 +1,51 @@
+#include "passageMesh/policy/PolicyEnvironment.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "passageMesh/blade/BladeShape.hpp"
+#include "passageMesh/passage/PassageCase.hpp"
+#include "passageMesh/passage/PassageSampler.hpp"
+#include "passageMesh/policy/PolicyScaling.hpp"
+#include "passageMesh/workflow/MeshQualityObjective.hpp"
+
+namespace passageMesh {
+
+std::mt19937_64 episodeRandom(std::uint64_t seed, std::uint64_t episode, std::uint32_t stream) {
+  std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
+                         static_cast<std::uint32_t>(episode),
+                         static_cast<std::uint32_t>(episode >> 32), stream};
+  return std::mt19937_64(sequence);
+}
+
+double standardNormal(std::mt19937_64& rng) {
+  const double u1 = 1.0 - uniform01(rng);  // in (0, 1]: the logarithm stays finite
+  const double u2 = uniform01(rng);
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+}
+
+PassageEnvironment::PassageEnvironment(BladeParameterRange range) : range_(std::move(range)) {}
+PassageEnvironment::PassageEnvironment() : PassageEnvironment(BladeParameterRange::readDefault()) {}
+
+int PassageEnvironment::stateSize() const { return policyStateSize; }
+int PassageEnvironment::actionSize() const { return policyActionSize; }
+
+EpisodeTask PassageEnvironment::draw(std::uint64_t seed, std::uint64_t episode) const {
+  std::mt19937_64 rng = episodeRandom(seed, episode, 0);
+  BladeSampler sampler(range_, rng());
+  const BladeParameters blade = sampler.next();
+  const PassageCondition condition = sampleCondition(blade.chord, rng);
+  const PolicyState state = policyState(blade, condition, range_);
+  auto input = std::make_shared<const PassageCase>(
+      PassageCase{BladeShape(blade), condition, MeshingParameters::defaults(blade.chord)});
+  EpisodeTask task;
+  task.state.assign(state.begin(), state.end());
+  task.reward = [input](const std::vector<double>& action) {
+    PolicyAction a{};
+    for (int k = 0; k < policyActionSize; ++k) a[k] = action.at(k);
+    return meshQualityOf(*input, meshingParametersOf(a, input->blade.parameters().chord));
+  };
+  return task;
+}
+
+}  // namespace passageMesh

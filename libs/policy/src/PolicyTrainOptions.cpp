@@ -1,0 +1,144 @@
+#include "passageMesh/policy/PolicyTrainOptions.hpp"
+
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <sstream>
+
+#include "passageMesh/core/Dictionary.hpp"
+#include "passageMesh/core/InputError.hpp"
+
+namespace passageMesh {
+
+double PolicyTrainOptions::noiseSigma(long episode) const {
+  if (episode < noiseStartEpisodes) return noiseStartSigma;
+  return noiseAmplitude *
+         (std::cos(2.0 * std::numbers::pi * static_cast<double>(episode) / static_cast<double>(noisePeriod)) + 1.0);
+}
+
+NetworkLayout PolicyTrainOptions::layout(int stateSize, int actionSize) const {
+  NetworkLayout l;
+  l.stateSize = stateSize;
+  l.actionSize = actionSize;
+  l.hidden = hidden;
+  l.leakySlope = leakySlope;
+  return l;
+}
+
+namespace {
+
+// One row per key: how it is read and written, and the smallest value allowed.
+struct Key {
+  const char* name;
+  std::function<void(const Dictionary&, PolicyTrainOptions&)> read;
+  std::function<std::string(const PolicyTrainOptions&)> write;
+};
+
+template <typename T>
+std::function<void(const Dictionary&, PolicyTrainOptions&)> readInteger(const char* name, T PolicyTrainOptions::*member,
+                                                                        long minimum) {
+  return [=](const Dictionary& d, PolicyTrainOptions& o) {
+    const long v = d.integer(name);
+    if (v < minimum)
+      throw InputError(d.source(), d.line(name), "<" + std::string(name) + "> must be at least " +
+                                                     std::to_string(minimum) + ", not " + std::to_string(v));
+    o.*member = static_cast<T>(v);
+  };
+}
+
+std::function<void(const Dictionary&, PolicyTrainOptions&)> readPositive(const char* name,
+                                                                         double& (*field)(PolicyTrainOptions&),
+                                                                         bool zeroAllowed) {
+  return [=](const Dictionary& d, PolicyTrainOptions& o) {
+    const double v = d.scalar(name);
+    if (!std::isfinite(v) || v < 0 || (v == 0 && !zeroAllowed))
+      throw InputError(d.source(), d.line(name), "<" + std::string(name) + "> must be " +
+                                                     (zeroAllowed ? "at least 0" : "positive"));
+    field(o) = v;
+  };
+}
+
+std::string exact(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+const std::vector<Key>& keys() {
+  using O = PolicyTrainOptions;
+  static const std::vector<Key> k{
+      {"episodes", readInteger("episodes", &O::episodes, 1), [](const O& o) { return std::to_string(o.episodes); }},
+      {"batchEpisodes", readInteger("batchEpisodes", &O::batchEpisodes, 1), [](const O& o) { return std::to_string(o.batchEpisodes); }},
+      {"minibatch", readInteger("minibatch", &O::minibatch, 1), [](const O& o) { return std::to_string(o.minibatch); }},
+      {"actorLearningRate", readPositive("actorLearningRate", [](O& o) -> double& { return o.learningRates.actor; }, false),
+       [](const O& o) { return exact(o.learningRates.actor); }},
+      {"criticLearningRate", readPositive("criticLearningRate", [](O& o) -> double& { return o.learningRates.critic; }, false),
+       [](const O& o) { return exact(o.learningRates.critic); }},
+      {"hiddenLayers",
+       [](const Dictionary& d, O& o) {
+         std::istringstream in(d.text("hiddenLayers"));
+         std::vector<int> widths;
+         std::string word;
+         while (in >> word) {
+           std::size_t used = 0;
+           int w = 0;
+           try { w = std::stoi(word, &used); } catch (const std::exception&) { used = 0; }
+           if (used != word.size() || w < 1)
+             throw InputError(d.source(), d.line("hiddenLayers"),
+                              "<hiddenLayers> expects positive layer widths, e.g. \"512 256 256 128\"; got '" + word + "'");
+           widths.push_back(w);
+         }
+         if (widths.empty())
+           throw InputError(d.source(), d.line("hiddenLayers"), "<hiddenLayers> needs at least one layer width");
+         o.hidden = widths;
+       },
+       [](const O& o) { return NetworkLayout{0, 0, o.hidden, o.leakySlope}.hiddenText(); }},
+      {"leakySlope", readPositive("leakySlope", [](O& o) -> double& { return o.leakySlope; }, true),
+       [](const O& o) { return exact(o.leakySlope); }},
+      {"criticUpdatesPerEpisode", readInteger("criticUpdatesPerEpisode", &O::criticUpdatesPerEpisode, 1),
+       [](const O& o) { return std::to_string(o.criticUpdatesPerEpisode); }},
+      {"actorUpdateEvery", readInteger("actorUpdateEvery", &O::actorUpdateEvery, 1), [](const O& o) { return std::to_string(o.actorUpdateEvery); }},
+      {"noiseStartSigma", readPositive("noiseStartSigma", [](O& o) -> double& { return o.noiseStartSigma; }, true),
+       [](const O& o) { return exact(o.noiseStartSigma); }},
+      {"noiseStartEpisodes", readInteger("noiseStartEpisodes", &O::noiseStartEpisodes, 0), [](const O& o) { return std::to_string(o.noiseStartEpisodes); }},
+      {"noiseAmplitude", readPositive("noiseAmplitude", [](O& o) -> double& { return o.noiseAmplitude; }, true),
+       [](const O& o) { return exact(o.noiseAmplitude); }},
+      {"noisePeriod", readInteger("noisePeriod", &O::noisePeriod, 1), [](const O& o) { return std::to_string(o.noisePeriod); }},
+      {"bufferCapacity", readInteger("bufferCapacity", &O::bufferCapacity, 1), [](const O& o) { return std::to_string(o.bufferCapacity); }},
+      {"validationEvery", readInteger("validationEvery", &O::validationEvery, 1), [](const O& o) { return std::to_string(o.validationEvery); }},
+      {"validationPassages", readInteger("validationPassages", &O::validationPassages, 0), [](const O& o) { return std::to_string(o.validationPassages); }},
+      {"validationSeed", readInteger("validationSeed", &O::validationSeed, 0), [](const O& o) { return std::to_string(o.validationSeed); }},
+      {"checkpointEvery", readInteger("checkpointEvery", &O::checkpointEvery, 1), [](const O& o) { return std::to_string(o.checkpointEvery); }},
+      {"logEvery", readInteger("logEvery", &O::logEvery, 1), [](const O& o) { return std::to_string(o.logEvery); }},
+      {"seed", readInteger("seed", &O::seed, 0), [](const O& o) { return std::to_string(o.seed); }},
+      {"threads", readInteger("threads", &O::threads, 0), [](const O& o) { return std::to_string(o.threads); }},
+  };
+  return k;
+}
+
+std::vector<std::string> keyNames() {
+  std::vector<std::string> names;
+  for (const Key& k : keys()) names.emplace_back(k.name);
+  return names;
+}
+
+}  // namespace
+
+PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file) {
+  PolicyTrainOptions options;
+  if (!std::filesystem::exists(file)) return options;
+  const Dictionary dict = Dictionary::read(file, "policyTrainDict", keyNames());
+  for (const Key& k : keys())
+    if (dict.has(k.name)) k.read(dict, options);
+  return options;
+}
+
+std::string policyTrainDictXml(const PolicyTrainOptions& options) {
+  Dictionary dict("policyTrainDict");
+  dict.setComment("passageMesh policyTrain settings; see docs/case-format.md and docs/policy.md.");
+  for (const Key& k : keys()) dict.set(k.name, k.write(options));
+  return dict.toXml();
+}
+
+}  // namespace passageMesh

@@ -1,0 +1,274 @@
+#include "passageMesh/policy/PolicyTrainer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "passageMesh/core/InputError.hpp"
+#include "TorchTensors.hpp"
+
+namespace passageMesh {
+
+namespace {
+
+constexpr const char* checkpointFormat = "passageMesh policyTrain checkpoint 1";
+constexpr std::uint32_t noiseStream = 1;
+constexpr std::uint32_t minibatchStream = 2;
+
+std::string layoutText(const NetworkLayout& l) {
+  std::ostringstream s;
+  s.precision(17);
+  s << l.stateSize << " " << l.actionSize << " [" << l.hiddenText() << "] " << l.leakySlope;
+  return s.str();
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// Rows of doubles as one tensor and back (learning curves, counters).
+template <typename Row, typename ToArray>
+torch::Tensor tableTensor(const std::vector<Row>& rows, int columns, ToArray toArray) {
+  torch::Tensor t = torch::zeros({static_cast<long>(rows.size()), columns}, torch::kFloat64);
+  auto a = t.accessor<double, 2>();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::vector<double> v = toArray(rows[i]);
+    for (int j = 0; j < columns; ++j) a[static_cast<long>(i)][j] = v[static_cast<std::size_t>(j)];
+  }
+  return t;
+}
+
+torch::Tensor batchTensor(const PolicyBatch& b) {
+  return torch::from_blob(const_cast<double*>(b.data()), {b.rows(), b.cols()}, torch::kFloat64).clone();
+}
+
+PolicyBatch batchFromTensor(const torch::Tensor& t) {
+  const torch::Tensor c = t.to(torch::kFloat64).contiguous();
+  return Eigen::Map<const PolicyBatch>(c.data_ptr<double>(), c.size(0), c.size(1));
+}
+
+}  // namespace
+
+PolicyTrainer::PolicyTrainer(const PolicyTrainOptions& options, const PolicyEnvironment& environment,
+                             RolloutEvaluator& rollouts)
+    : options_(options),
+      environment_(environment),
+      rollouts_(rollouts),
+      learner_((torch::set_num_threads(1), options.layout(environment.stateSize(), environment.actionSize())),
+               options.learningRates, options.seed),
+      buffer_(environment.stateSize(), environment.actionSize(), options.bufferCapacity),
+      minibatchRandom_(episodeRandom(options.seed, 0, minibatchStream)),
+      bestValidation_(-std::numeric_limits<double>::infinity()),
+      start_(std::chrono::steady_clock::now()) {
+  for (int i = 0; i < options_.validationPassages; ++i)
+    validationTasks_.push_back(environment_.draw(options_.validationSeed, static_cast<std::uint64_t>(i)));
+}
+
+double PolicyTrainer::secondsTrained() const {
+  return secondsBefore_ +
+         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void PolicyTrainer::learnFrom(const std::vector<double>& state, const std::vector<double>& action,
+                              double reward) {
+  buffer_.add(state, action, reward);
+  ++episode_;
+  if (buffer_.size() >= options_.minibatch) {
+    PolicyBatch s, a;
+    Eigen::VectorXd r;
+    for (int k = 0; k < options_.criticUpdatesPerEpisode; ++k) {
+      buffer_.sample(options_.minibatch, minibatchRandom_, s, a, r);
+      lossSum_ += learner_.updateCritic(s, a, r);
+      ++lossCount_;
+    }
+    if (episode_ % options_.actorUpdateEvery == 0) {
+      buffer_.sample(options_.minibatch, minibatchRandom_, s, a, r);
+      learner_.updateActor(s);
+    }
+  }
+  if (episode_ % options_.logEvery == 0) {
+    const std::vector<double> recent = buffer_.recentRewards(options_.logEvery);
+    LearningRecord record;
+    record.episode = episode_;
+    double sum = 0;
+    int valid = 0;
+    for (double v : recent) {
+      sum += v;
+      valid += v > -1.0;
+    }
+    record.meanReward = recent.empty() ? 0.0 : sum / static_cast<double>(recent.size());
+    record.validFraction = recent.empty() ? 0.0 : static_cast<double>(valid) / static_cast<double>(recent.size());
+    record.criticLoss = lossCount_ ? lossSum_ / static_cast<double>(lossCount_) : 0.0;
+    record.sigma = options_.noiseSigma(episode_ - 1);
+    record.seconds = secondsTrained();
+    learning_.push_back(record);
+    lossSum_ = 0;
+    lossCount_ = 0;
+  }
+}
+
+void PolicyTrainer::runBatch() {
+  const long first = episode_;
+  const int count = static_cast<int>(std::min<long>(options_.batchEpisodes, options_.episodes - first));
+  std::vector<EpisodeTask> tasks(static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i)
+    tasks[static_cast<std::size_t>(i)] = environment_.draw(options_.seed, static_cast<std::uint64_t>(first + i));
+  PolicyBatch states(count, environment_.stateSize());
+  for (int i = 0; i < count; ++i)
+    states.row(i) = Eigen::Map<const Eigen::RowVectorXd>(tasks[static_cast<std::size_t>(i)].state.data(),
+                                                         environment_.stateSize());
+  PolicyBatch actions = learner_.act(states);
+  for (int i = 0; i < count; ++i) {
+    std::mt19937_64 noise = episodeRandom(options_.seed, static_cast<std::uint64_t>(first + i), noiseStream);
+    const double sigma = options_.noiseSigma(first + i);
+    for (int k = 0; k < actions.cols(); ++k)
+      actions(i, k) = std::clamp(actions(i, k) + sigma * standardNormal(noise), -1.0, 1.0);
+  }
+  const std::vector<double> rewards =
+      rollouts_.rewards(tasks, actions, options_.seed, static_cast<std::uint64_t>(first));
+  for (int i = 0; i < count; ++i) {
+    const auto a = actions.row(i);
+    learnFrom(tasks[static_cast<std::size_t>(i)].state, std::vector<double>(a.data(), a.data() + a.size()),
+              rewards[static_cast<std::size_t>(i)]);
+  }
+}
+
+void PolicyTrainer::validate() {
+  if (validationTasks_.empty()) return;
+  const int n = static_cast<int>(validationTasks_.size());
+  PolicyBatch states(n, environment_.stateSize());
+  for (int i = 0; i < n; ++i)
+    states.row(i) = Eigen::Map<const Eigen::RowVectorXd>(validationTasks_[static_cast<std::size_t>(i)].state.data(),
+                                                         environment_.stateSize());
+  const std::vector<double> rewards =
+      rollouts_.rewards(validationTasks_, learner_.act(states), options_.validationSeed, 0);
+  ValidationRecord record;
+  record.episode = episode_;
+  record.passages = n;
+  double sum = 0;
+  for (double r : rewards) {
+    sum += r;
+    record.valid += r > -1.0;
+  }
+  record.meanReward = sum / n;
+  record.medianReward = median(rewards);
+  validation_.push_back(record);
+}
+
+bool PolicyTrainer::run(const std::atomic<bool>* stop, const Events& events) {
+  start_ = std::chrono::steady_clock::now();
+  while (episode_ < options_.episodes) {
+    if (stop && stop->load()) return false;
+    const long before = episode_;
+    runBatch();
+    const bool done = episode_ >= options_.episodes;
+    if (done || episode_ / options_.validationEvery > before / options_.validationEvery) {
+      validate();
+      if (!validation_.empty() && validation_.back().episode == episode_ &&
+          validation_.back().meanReward > bestValidation_) {
+        bestValidation_ = validation_.back().meanReward;
+        if (events.newBestValidation) events.newBestValidation(*this);
+      }
+    }
+    if (events.afterBatch) events.afterBatch(*this);
+    if ((done || episode_ / options_.checkpointEvery > before / options_.checkpointEvery) &&
+        events.checkpointDue)
+      events.checkpointDue(*this);
+  }
+  return true;
+}
+
+void PolicyTrainer::saveCheckpoint(const std::filesystem::path& file) const {
+  torch::serialize::OutputArchive archive;
+  archive.write("format", c10::IValue(std::string(checkpointFormat)));
+  archive.write("layout", c10::IValue(layoutText(learner_.layout())));
+  archive.write("seed", c10::IValue(std::to_string(options_.seed)));
+  std::ostringstream rng;
+  rng << minibatchRandom_;
+  archive.write("minibatchRandom", c10::IValue(rng.str()));
+  const double counters[] = {static_cast<double>(episode_), bestValidation_, lossSum_,
+                             static_cast<double>(lossCount_), secondsTrained()};
+  archive.write("counters", torch::tensor(at::ArrayRef<double>(counters, 5), torch::kFloat64));
+  PolicyBatch s, a;
+  Eigen::VectorXd r;
+  buffer_.exportEpisodes(s, a, r);
+  archive.write("bufferStates", batchTensor(s));
+  archive.write("bufferActions", batchTensor(a));
+  archive.write("bufferRewards", batchTensor(PolicyBatch(r)));
+  archive.write("learning", tableTensor(learning_, 6, [](const LearningRecord& x) {
+                  return std::vector<double>{static_cast<double>(x.episode), x.meanReward, x.validFraction,
+                                             x.criticLoss, x.sigma, x.seconds};
+                }));
+  archive.write("validation", tableTensor(validation_, 5, [](const ValidationRecord& x) {
+                  return std::vector<double>{static_cast<double>(x.episode), x.meanReward, x.medianReward,
+                                             static_cast<double>(x.valid), static_cast<double>(x.passages)};
+                }));
+  torch::serialize::OutputArchive networks;
+  learner_.save(networks);
+  archive.write("networks", networks);
+  saveArchiveAtomically(archive, file);
+}
+
+void PolicyTrainer::resume(const std::filesystem::path& file) {
+  const std::string name = file.string();
+  if (!std::filesystem::exists(file)) throw InputError(name, 0, "no checkpoint to resume from");
+  try {
+    torch::serialize::InputArchive archive;
+    archive.load_from(name);
+    c10::IValue value;
+    archive.read("format", value);
+    if (!value.isString() || value.toStringRef() != checkpointFormat)
+      throw InputError(name, 0, "not a policyTrain checkpoint (format line missing or different)");
+    archive.read("layout", value);
+    if (value.toStringRef() != layoutText(learner_.layout()))
+      throw InputError(name, 0, "the checkpoint's networks are " + value.toStringRef() +
+                                    " (state, action, [hidden], slope), this run's " +
+                                    layoutText(learner_.layout()));
+    archive.read("seed", value);
+    if (value.toStringRef() != std::to_string(options_.seed))
+      throw InputError(name, 0, "the checkpoint was written with seed " + value.toStringRef() +
+                                    ", this run has seed " + std::to_string(options_.seed));
+    archive.read("minibatchRandom", value);
+    std::istringstream rng(value.toStringRef());
+    rng >> minibatchRandom_;
+    torch::Tensor t;
+    archive.read("counters", t);
+    const auto c = t.accessor<double, 1>();
+    episode_ = static_cast<long>(c[0]);
+    bestValidation_ = c[1];
+    lossSum_ = c[2];
+    lossCount_ = static_cast<long>(c[3]);
+    secondsBefore_ = c[4];
+    torch::Tensor s, a, r;
+    archive.read("bufferStates", s);
+    archive.read("bufferActions", a);
+    archive.read("bufferRewards", r);
+    buffer_.importEpisodes(batchFromTensor(s), batchFromTensor(a), batchFromTensor(r).col(0));
+    archive.read("learning", t);
+    learning_.clear();
+    const auto l = t.accessor<double, 2>();
+    for (long i = 0; i < t.size(0); ++i)
+      learning_.push_back(LearningRecord{static_cast<long>(l[i][0]), l[i][1], l[i][2], l[i][3], l[i][4], l[i][5]});
+    archive.read("validation", t);
+    validation_.clear();
+    const auto v = t.accessor<double, 2>();
+    for (long i = 0; i < t.size(0); ++i)
+      validation_.push_back(ValidationRecord{static_cast<long>(v[i][0]), v[i][1], v[i][2],
+                                             static_cast<int>(v[i][3]), static_cast<int>(v[i][4])});
+    torch::serialize::InputArchive networks;
+    archive.read("networks", networks);
+    learner_.load(networks);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    std::string what = e.what();
+    what = what.substr(0, what.find('\n'));
+    throw InputError(name, 0, "corrupt or unreadable checkpoint (" + what + ")");
+  }
+}
+
+}  // namespace passageMesh

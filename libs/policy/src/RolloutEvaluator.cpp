@@ -1,0 +1,37 @@
+#include "passageMesh/policy/RolloutEvaluator.hpp"
+
+#include <string>
+#include <thread>
+
+#include "passageMesh/core/ParallelFor.hpp"
+
+namespace passageMesh {
+
+void rewardsOfSlice(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions, int offset,
+                    int stride, int threads, std::vector<double>& rewards) {
+  const int count = static_cast<int>(tasks.size());
+  rewards.assign(tasks.size(), 0.0);
+  const int mine = count > offset ? (count - offset + stride - 1) / stride : 0;
+  parallelFor(mine, threads, [&](int k) {
+    const int i = offset + k * stride;
+    const auto row = actions.row(i);
+    rewards[static_cast<std::size_t>(i)] =
+        tasks[static_cast<std::size_t>(i)].reward(std::vector<double>(row.data(), row.data() + row.size()));
+  });
+}
+
+ThreadRollouts::ThreadRollouts(int threads) : threads_(threads) {}
+
+std::vector<double> ThreadRollouts::rewards(const std::vector<EpisodeTask>& tasks,
+                                            const PolicyBatch& actions, std::uint64_t, std::uint64_t) {
+  std::vector<double> r;
+  rewardsOfSlice(tasks, actions, 0, 1, threads_, r);
+  return r;
+}
+
+std::string ThreadRollouts::description() const {
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  return std::to_string(threads_ > 0 ? threads_ : static_cast<int>(cores)) + " rollout threads";
+}
+
+}  // namespace passageMesh

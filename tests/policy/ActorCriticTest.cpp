@@ -1,0 +1,71 @@
+// The LibTorch networks and the learner: gradients against finite differences, and
+// learning a problem with a known optimum.
+#include "passageMesh/policy/ActorCritic.hpp"
+
+#include <gtest/gtest.h>
+
+#include "passageMesh/policy/PolicyNetworks.hpp"
+#include "passageMesh/policy/PolicyTrainer.hpp"
+#include "passageMesh/policy/ToyEnvironment.hpp"
+
+using namespace passageMesh;
+
+TEST(ActorCritic, CriticGradientsMatchFiniteDifferences) {
+  torch::manual_seed(4);
+  NetworkLayout layout{3, 2, {5, 4}, 0.01};
+  FullyConnected critic = makeCritic(layout);
+  critic->to(torch::kFloat64);
+  const torch::Tensor input = torch::rand({6, 5}, torch::kFloat64) * 2 - 1;
+  const torch::Tensor target = torch::rand({6, 1}, torch::kFloat64);
+  auto loss = [&] { return torch::mse_loss(critic->forward(input), target); };
+  critic->zero_grad();
+  loss().backward();
+  torch::NoGradGuard noGrad;
+  const double h = 1e-6;
+  int checked = 0;
+  for (auto& p : critic->parameters()) {
+    const torch::Tensor flat = p.view(-1);
+    const torch::Tensor grad = p.grad().view(-1);
+    for (long i = 0; i < flat.size(0); ++i) {
+      const double v = flat[i].item<double>();
+      flat[i] = v + h;
+      const double up = loss().item<double>();
+      flat[i] = v - h;
+      const double down = loss().item<double>();
+      flat[i] = v;
+      EXPECT_NEAR(grad[i].item<double>(), (up - down) / (2 * h), 1e-7);
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, (5 * 5 + 5) + (5 * 4 + 4) + (4 + 1));
+}
+
+TEST(ActorCritic, ActorOutputsStayInsideTheActionBox) {
+  ActorCritic learner(NetworkLayout{4, 3, {8}, 0.01}, LearningRates{}, 1);
+  PolicyBatch states = PolicyBatch::Constant(5, 4, 1e3);
+  const PolicyBatch a = learner.act(states);
+  EXPECT_EQ(a.rows(), 5);
+  EXPECT_EQ(a.cols(), 3);
+  EXPECT_LE(a.cwiseAbs().maxCoeff(), 1.0);
+}
+
+// The must-show of issue 12: the actor-critic learns x*(c) of a problem with the passage's
+// state and action sizes to an RMS error below 0.05 on unseen conditions. Small networks,
+// actor 3e-4 and critic 1e-3 learning rates; 40000 episodes, about 40 s on one core
+// (docs/benchmarks.md "Policy learner").
+TEST(ActorCritic, LearnsAToyProblemsOptimalActions) {
+  PolicyTrainOptions options;
+  options.episodes = 40000;
+  options.hidden = {64, 64};
+  options.learningRates = {3e-4, 1e-3};
+  options.validationPassages = 0;
+  options.threads = 1;
+  const ToyEnvironment toy(24, 8, 7);
+  ThreadRollouts rollouts(1);
+  PolicyTrainer trainer(options, toy, rollouts);
+  const double before = toy.actionError(trainer.learner(), 99, 1000);
+  ASSERT_TRUE(trainer.run(nullptr, {}));
+  const double after = toy.actionError(trainer.learner(), 99, 1000);
+  EXPECT_GT(before, 0.3);
+  EXPECT_LT(after, 0.05) << "RMS action error on unseen states, started at " << before;
+}

@@ -1,0 +1,49 @@
+#include "passageMesh/policy/PolicyTrainOptions.hpp"
+
+#include <gtest/gtest.h>
+
+#include "../TestFiles.hpp"
+#include "passageMesh/core/InputError.hpp"
+
+using namespace passageMesh;
+
+TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
+  PolicyTrainOptions o;
+  o.episodes = 1234;
+  o.hidden = {32, 16};
+  o.learningRates = {3e-4, 1e-3};
+  o.noiseAmplitude = 0.125;
+  o.seed = 77;
+  const auto file = testData::writeTempFile("policyTrainDict", "dict.xml", policyTrainDictXml(o));
+  const PolicyTrainOptions back = readPolicyTrainDict(file);
+  EXPECT_EQ(policyTrainDictXml(back), policyTrainDictXml(o));
+  EXPECT_EQ(back.hidden, (std::vector<int>{32, 16}));
+  EXPECT_EQ(back.learningRates.actor, 3e-4);
+  EXPECT_EQ(readPolicyTrainDict(file.parent_path() / "missing.xml").episodes, PolicyTrainOptions{}.episodes);
+}
+
+TEST(PolicyTrainOptions, PaperNoiseSchedule) {
+  const PolicyTrainOptions o;
+  EXPECT_EQ(o.noiseSigma(0), 1.0);
+  EXPECT_EQ(o.noiseSigma(999), 1.0);
+  EXPECT_NEAR(o.noiseSigma(1000), 0.5, 1e-15);
+  EXPECT_NEAR(o.noiseSigma(1500), 0.0, 1e-15);
+  EXPECT_NEAR(o.noiseSigma(1250), 0.25, 1e-12);
+}
+
+TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
+  const auto bad = [](const std::string& body) {
+    const auto file = testData::writeTempFile("policyTrainDict", "bad.xml",
+                                              "<policyTrainDict>\n" + body + "\n</policyTrainDict>\n");
+    try {
+      readPolicyTrainDict(file);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(bad("<episodes>0</episodes>").find("bad.xml:2"), std::string::npos);
+  EXPECT_NE(bad("<hiddenLayers>512 x</hiddenLayers>").find("hiddenLayers"), std::string::npos);
+  EXPECT_NE(bad("<actorLearningRate>-1</actorLearningRate>").find("positive"), std::string::npos);
+  EXPECT_NE(bad("<epsiodes>10</epsiodes>").find("epsiodes"), std::string::npos);
+}

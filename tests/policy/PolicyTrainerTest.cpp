@@ -1,0 +1,126 @@
+// The training loop: checkpoints resume bit for bit, and the weights do not depend on
+// how many threads build the meshes.
+#include "passageMesh/policy/PolicyTrainer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "../TestFiles.hpp"
+#include "passageMesh/core/InputError.hpp"
+#include "passageMesh/policy/ToyEnvironment.hpp"
+
+using namespace passageMesh;
+
+namespace {
+
+PolicyTrainOptions smallRun(long episodes) {
+  PolicyTrainOptions o;
+  o.episodes = episodes;
+  o.batchEpisodes = 16;
+  o.minibatch = 20;
+  o.hidden = {16, 16};
+  o.learningRates = {1e-3, 1e-3};
+  o.validationEvery = 100;
+  o.validationPassages = 5;
+  o.checkpointEvery = 64;
+  o.logEvery = 50;
+  o.noiseStartEpisodes = 40;
+  o.seed = 11;
+  o.threads = 1;
+  return o;
+}
+
+// The actor's and the critic's outputs on fixed inputs: equal exactly when the weights are.
+std::pair<PolicyBatch, Eigen::VectorXd> fingerprint(const ActorCritic& learner, int stateSize, int actionSize) {
+  PolicyBatch s(7, stateSize), a(7, actionSize);
+  for (int i = 0; i < 7; ++i) {
+    for (int k = 0; k < stateSize; ++k) s(i, k) = std::sin(1.0 + i * stateSize + k);
+    for (int k = 0; k < actionSize; ++k) a(i, k) = std::cos(2.0 + i * actionSize + k);
+  }
+  return {learner.act(s), learner.value(s, a)};
+}
+
+}  // namespace
+
+TEST(PolicyTrainer, ResumingFromACheckpointGivesTheSameWeightsBitForBit) {
+  const ToyEnvironment toy(24, 8, 3);
+  ThreadRollouts rollouts(1);
+  PolicyTrainer straight(smallRun(300), toy, rollouts);
+  ASSERT_TRUE(straight.run(nullptr, {}));
+
+  const auto file = testData::tempFolder("policyTrainer") / "checkpoint.pt";
+  {
+    PolicyTrainer first(smallRun(300), toy, rollouts);
+    std::atomic<bool> stop{false};
+    PolicyTrainer::Events events;
+    events.checkpointDue = [&](const PolicyTrainer& t) {
+      t.saveCheckpoint(file);
+      stop = true;  // as if killed right after the first checkpoint
+    };
+    ASSERT_FALSE(first.run(&stop, events));
+    EXPECT_EQ(first.episode(), 64);
+  }
+  PolicyTrainer resumed(smallRun(300), toy, rollouts);
+  resumed.resume(file);
+  EXPECT_EQ(resumed.episode(), 64);
+  ASSERT_TRUE(resumed.run(nullptr, {}));
+
+  EXPECT_EQ(fingerprint(resumed.learner(), 24, 8), fingerprint(straight.learner(), 24, 8));
+  ASSERT_EQ(resumed.learningCurve().size(), straight.learningCurve().size());
+  for (std::size_t i = 0; i < resumed.learningCurve().size(); ++i)
+    EXPECT_EQ(resumed.learningCurve()[i].meanReward, straight.learningCurve()[i].meanReward);
+  ASSERT_EQ(resumed.validationCurve().size(), 3u);
+  EXPECT_EQ(resumed.validationCurve().back().meanReward, straight.validationCurve().back().meanReward);
+  EXPECT_EQ(resumed.bestValidation(), straight.bestValidation());
+}
+
+TEST(PolicyTrainer, ACheckpointOfAnotherRunOrACorruptFileIsRefusedWithItsName) {
+  const ToyEnvironment toy(24, 8, 3);
+  ThreadRollouts rollouts(1);
+  const auto dir = testData::tempFolder("policyTrainerBad");
+  PolicyTrainer trainer(smallRun(64), toy, rollouts);
+  trainer.run(nullptr, {});
+  trainer.saveCheckpoint(dir / "good.pt");
+
+  PolicyTrainOptions otherSeed = smallRun(64);
+  otherSeed.seed = 12;
+  PolicyTrainer other(otherSeed, toy, rollouts);
+  try {
+    other.resume(dir / "good.pt");
+    FAIL() << "a checkpoint of another seed was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("seed 11"), std::string::npos) << e.what();
+  }
+  PolicyTrainOptions otherLayout = smallRun(64);
+  otherLayout.hidden = {16, 8};
+  PolicyTrainer wider(otherLayout, toy, rollouts);
+  EXPECT_THROW(wider.resume(dir / "good.pt"), InputError);
+
+  std::ofstream(dir / "corrupt.pt") << "not a checkpoint";
+  try {
+    PolicyTrainer t(smallRun(64), toy, rollouts);
+    t.resume(dir / "corrupt.pt");
+    FAIL() << "a corrupt checkpoint was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("corrupt.pt"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+}
+
+TEST(PolicyTrainer, PassageTrainingGivesTheSameWeightsOnOneOrTwoThreads) {
+  const PassageEnvironment passages;
+  PolicyTrainOptions o = smallRun(32);
+  o.validationPassages = 4;
+  o.validationEvery = 32;
+  ThreadRollouts one(1), two(2);
+  PolicyTrainer a(o, passages, one), b(o, passages, two);
+  ASSERT_TRUE(a.run(nullptr, {}));
+  ASSERT_TRUE(b.run(nullptr, {}));
+  EXPECT_EQ(fingerprint(a.learner(), 24, 8), fingerprint(b.learner(), 24, 8));
+  ASSERT_EQ(a.validationCurve().size(), 1u);
+  EXPECT_EQ(a.validationCurve()[0].meanReward, b.validationCurve()[0].meanReward);
+  std::vector<double> rewards = a.buffer().recentRewards(32);
+  for (double r : rewards) EXPECT_TRUE(r == -1.0 || (r >= 0.0 && r <= 1.0)) << r;
+}
