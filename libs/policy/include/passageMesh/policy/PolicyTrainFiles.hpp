@@ -1,0 +1,30 @@
+#pragma once
+// What policyTrain leaves in a case (docs/file-formats.md "policyTrain outputs"):
+//   policy/policy.xml, policy/policy.pt   the actor of the best validation so far (Policy.hpp)
+//   policy/checkpoint.pt                  everything -resume needs (PolicyTrainer)
+//   postProcessing/policyTrain/learning.csv    episode, meanReward, validFraction,
+//                                              criticLoss, sigma, seconds
+//   postProcessing/policyTrain/validation.csv  episode, meanReward, medianReward, valid, passages
+//   postProcessing/policyTrain/learning.png    both curves (gnuplot)
+// All written atomically; the CSVs are rewritten whole from the trainer's records, so a
+// resumed run's files hold the whole history.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "passageMesh/policy/PolicyTrainer.hpp"
+
+namespace passageMesh {
+
+struct PolicyTrainPaths {
+  explicit PolicyTrainPaths(const std::filesystem::path& caseDir);
+  std::filesystem::path policy, checkpoint, learningCsv, validationCsv, learningPng;
+};
+
+// Writes both CSVs and the picture; returns the files written. A missing gnuplot is a
+// warning in `warnings`, not an error (the CSVs are what matters).
+std::vector<std::filesystem::path> writeLearningCurves(const PolicyTrainPaths& paths,
+                                                       const PolicyTrainer& trainer,
+                                                       std::vector<std::string>* warnings);
+
+}  // namespace passageMesh

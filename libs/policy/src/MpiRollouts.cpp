@@ -1,0 +1,78 @@
+#include "passageMesh/policy/MpiRollouts.hpp"
+
+#include <mpi.h>
+
+#include <array>
+#include <thread>
+
+namespace passageMesh {
+
+namespace {
+
+// The header rank 0 broadcasts before each batch: command, seed, first episode, count.
+enum Command : std::uint64_t { stopCommand = 0, evaluateCommand = 1 };
+using Header = std::array<std::uint64_t, 4>;
+
+void broadcastHeader(Header& h) { MPI_Bcast(h.data(), 4, MPI_UINT64_T, 0, MPI_COMM_WORLD); }
+
+// Every rank's part of one batch; the sum over ranks lands on rank 0.
+std::vector<double> evaluateBatch(const MpiSession& session, const PolicyEnvironment& environment,
+                                  int threads, const Header& h, std::vector<EpisodeTask> tasks,
+                                  PolicyBatch& actions) {
+  const int count = static_cast<int>(h[3]);
+  actions.resize(count, environment.actionSize());
+  MPI_Bcast(actions.data(), static_cast<int>(actions.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  if (tasks.empty()) {
+    tasks.resize(static_cast<std::size_t>(count));
+    for (int i = session.rank(); i < count; i += session.size())
+      tasks[static_cast<std::size_t>(i)] = environment.draw(h[1], h[2] + static_cast<std::uint64_t>(i));
+  }
+  std::vector<double> mine, all(static_cast<std::size_t>(count), 0.0);
+  rewardsOfSlice(tasks, actions, session.rank(), session.size(), threads, mine);
+  MPI_Reduce(mine.data(), all.data(), count, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
+  return all;
+}
+
+}  // namespace
+
+MpiSession::MpiSession(int& argc, char**& argv) {
+  MPI_Init(&argc, &argv);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiSession::~MpiSession() { MPI_Finalize(); }
+
+MpiRollouts::MpiRollouts(const MpiSession& session, const PolicyEnvironment& environment, int threads)
+    : session_(session), environment_(environment), threads_(threads) {}
+
+MpiRollouts::~MpiRollouts() {
+  Header h{stopCommand, 0, 0, 0};
+  broadcastHeader(h);
+}
+
+std::vector<double> MpiRollouts::rewards(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
+                                         std::uint64_t seed, std::uint64_t first) {
+  Header h{evaluateCommand, seed, first, tasks.size()};
+  broadcastHeader(h);
+  PolicyBatch copy = actions;
+  return evaluateBatch(session_, environment_, threads_, h, tasks, copy);
+}
+
+std::string MpiRollouts::description() const {
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  return std::to_string(session_.size()) + " MPI ranks x " +
+         std::to_string(threads_ > 0 ? threads_ : static_cast<int>(cores)) + " rollout threads";
+}
+
+void serveRollouts(const MpiSession& session, const PolicyEnvironment& environment, int threads) {
+  for (;;) {
+    Header h{};
+    broadcastHeader(h);
+    if (h[0] == stopCommand) return;
+    PolicyBatch actions;
+    evaluateBatch(session, environment, threads, h, {}, actions);
+  }
+}
+
+}  // namespace passageMesh

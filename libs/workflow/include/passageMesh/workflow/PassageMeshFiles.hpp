@@ -1,0 +1,19 @@
+#pragma once
+// Meshing a case as ellipticMesh and policyMesh do: build the HOH mesh, print what a CFD
+// engineer checks (smoothing convergence, first cell height, wall-line angles, H-block
+// uniformity), refuse an invalid mesh, and write mesh/passage.cgns and mesh/passage.vtm
+// (+ mesh/passage/<block>.vts) atomically.
+#include <filesystem>
+#include <string>
+
+#include "passageMesh/mesh/HohMesh.hpp"
+#include "passageMesh/passage/PassageCase.hpp"
+
+namespace passageMesh {
+
+// Lines start with "TOOL: ". Throws std::runtime_error ("the mesh is invalid: ...") and
+// writes nothing when the mesh is invalid.
+HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& caseDir,
+                         const std::string& tool);
+
+}  // namespace passageMesh

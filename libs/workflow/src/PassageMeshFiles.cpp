@@ -1,0 +1,46 @@
+#include "passageMesh/workflow/PassageMeshFiles.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "passageMesh/core/AtomicFile.hpp"
+#include "passageMesh/mesh/MeshStatistics.hpp"
+#include "passageMesh/structured/BlockUniformity.hpp"
+#include "passageMesh/structured/CgnsWriter.hpp"
+#include "passageMesh/structured/VtkWriter.hpp"
+
+namespace passageMesh {
+
+HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& dir,
+                         const std::string& tool) {
+  const PassageCondition& condition = input.condition;
+  const MeshingParameters& parameters = input.parameters;
+  const HohMesh hoh = buildHohMesh(input.blade, condition, parameters);
+  const EllipticReport& s = hoh.smoothing;
+  if (s.iterations > 0)
+    std::printf("%s: O-block %d x %d nodes; elliptic smoothing: %d multigrid cycles, "
+                "residual %.3e (%s)\n", tool.c_str(), parameters.nT, hoh.nN, s.iterations, s.residual,
+                s.converged ? "converged" : "NOT converged");
+  else  // refused before smoothing (a boundary through the blade, an impossible clustering),
+        // or too few rows to smooth
+    std::printf("%s: O-block %d x %d nodes; not smoothed\n", tool.c_str(), parameters.nT, hoh.nN);
+  if (!hoh.valid) throw std::runtime_error("the mesh is invalid: " + hoh.problem);
+
+  const StructuredBlock& o = hoh.mesh.blocks[1];
+  const WallLayerStatistics wall = wallLayerStatistics(o, condition.firstCellHeight);
+  std::printf("  first cell height within 2 %% at %.1f %% of the wall nodes (worst %.2f %% at "
+              "i = %d)\n  wall-line angle: mean deviation from 90 deg %.3f deg, max %.3f deg "
+              "at i = %d\n  H-block cell non-uniformity: inlet %.2e, outlet %.2e\n",
+              100 * wall.heightWithin2Percent, 100 * wall.heightMaxError, wall.heightWorstNode,
+              wall.angleMeanDeviation, wall.angleMaxDeviation, wall.angleWorstNode,
+              blockNonUniformity(hoh.mesh.blocks[0]), blockNonUniformity(hoh.mesh.blocks[2]));
+
+  validateStructuredMesh(hoh.mesh);
+  std::filesystem::create_directories(dir / "mesh");
+  writeFilesAtomically(vtmFileContents(hoh.mesh, dir / "mesh" / "passage.vtm"));
+  writeCgns(hoh.mesh, dir / "mesh" / "passage.cgns");
+  std::printf("  wrote mesh/passage.cgns, mesh/passage.vtm\n");
+  return hoh;
+}
+
+}  // namespace passageMesh

@@ -1,0 +1,59 @@
+// policyMesh: meshes a blade passage in one shot with a trained policy (issue 12,
+// docs/policy.md): one forward pass of the actor maps the blade and the condition to the
+// meshing parameters, then the HOH mesh is built, written and measured in the same run.
+//   reads  constant/bladeParameters.xml, system/passageDict.xml, the policy
+//          (-policy FILE.xml; default etc/policy/policy.xml, the shipped one)
+//   writes system/meshDict.xml (the policy's parameters), mesh/passage.cgns,
+//          mesh/passage.vtm + mesh/passage/<block>.vts
+// A condition or blade outside the policy's training ranges gets a warning naming the
+// value. An invalid mesh is an error (exit 1; meshDict.xml is written, the mesh is not).
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "passageMesh/core/CommandLine.hpp"
+#include "passageMesh/passage/PassageCase.hpp"
+#include "passageMesh/policy/Policy.hpp"
+#include "passageMesh/quality/MeshQuality.hpp"
+#include "passageMesh/workflow/PassageMeshFiles.hpp"
+
+using namespace passageMesh;
+namespace po = boost::program_options;
+
+int main(int argc, char* argv[]) {
+  return runUtility("policyMesh", [&] {
+    CommandLine cli("policyMesh",
+                    "Meshes the case's blade passage in one shot: a trained policy gives the\n"
+                    "meshing parameters (written to system/meshDict.xml), then the HOH mesh is\n"
+                    "built, written (mesh/passage.cgns, mesh/passage.vtm) and its quality Q printed.");
+    cli.addOptions()("policy", po::value<std::string>(),
+                     "the policy's .xml file (default: etc/policy/policy.xml, the shipped policy)");
+    if (!cli.parse(argc, argv)) return 0;
+    const std::filesystem::path policyFile =
+        cli.values().count("policy") ? std::filesystem::path(cli.values()["policy"].as<std::string>())
+                                     : defaultPolicyFile();
+    const Policy policy = Policy::load(policyFile);
+    PassageCase input = readPassageCase(cli.caseDir(), "policyMesh");
+    const BladeParameters& blade = input.blade.parameters();
+
+    const auto start = std::chrono::steady_clock::now();
+    const PolicyState state = policyState(blade, input.condition);
+    for (const auto& w : stateOutsideTraining(state)) std::cerr << "policyMesh: warning: " << w << "\n";
+    input.parameters = meshingParametersOf(policy.act(state), blade.chord);
+    const double forwardSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    writeMeshDict(cli.caseDir() / "system" / "meshDict.xml", input.parameters);
+    std::printf("policyMesh: policy %s (%ld episodes), forward pass %.3f ms; meshing parameters "
+                "(yIn, yOut in metres) written to system/meshDict.xml:\n",
+                policyFile.c_str(), policy.provenance().episodes, 1e3 * forwardSeconds);
+    const auto values = input.parameters.toArray();
+    for (int k = 0; k < MeshingParameters::size; ++k)
+      std::printf("    %-12s %.17g\n", MeshingParameters::names()[k].c_str(), values[k]);
+
+    const HohMesh hoh = meshCaseAndWrite(input, cli.caseDir(), "policyMesh");
+    const MeshQuality q = computeMeshQuality(hoh.mesh);
+    std::printf("policyMesh: Q = %.17g (min Q_J %.6f, mean Q_J %.6f, min Q_S %.6f, mean Q_S %.6f)\n", q.Q,
+                q.QJmin, q.QJavg, q.QSmin, q.QSavg);
+    return 0;
+  });
+}

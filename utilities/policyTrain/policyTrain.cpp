@@ -1,0 +1,166 @@
+// policyTrain: trains the policy that maps a blade passage to its optimal meshing
+// parameters by single-step deep reinforcement learning (method.md section 6; issue 12;
+// docs/policy.md). Passages are drawn from the sampler's ranges; the case holds only the
+// settings and the results.
+//   reads  system/policyTrainDict.xml (optional; every key has a default)
+//   writes policy/policy.xml + policy.pt (the best policy by validation so far),
+//          policy/checkpoint.pt, postProcessing/policyTrain/{learning,validation}.csv,
+//          learning.png
+// -resume continues from policy/checkpoint.pt; -parallel under mpirun spreads the
+// rollouts over the ranks. Exit codes: 0 done, 1 bad input, 130 interrupted by Ctrl-C
+// (a checkpoint was written: run again with -resume).
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "passageMesh/core/CommandLine.hpp"
+#include "passageMesh/core/InputError.hpp"
+#include "passageMesh/core/InterruptFlag.hpp"
+#include "passageMesh/policy/MpiRollouts.hpp"
+#include "passageMesh/policy/Policy.hpp"
+#include "passageMesh/policy/PolicyTrainFiles.hpp"
+#include "passageMesh/workflow/OptimizationProgressLine.hpp"
+
+using namespace passageMesh;
+namespace po = boost::program_options;
+
+namespace {
+
+constexpr int interruptedExitCode = 130;
+
+std::string commandText(int argc, char* argv[]) {
+  std::string text = "policyTrain";
+  for (int i = 1; i < argc; ++i) text += std::string(" ") + argv[i];
+  return text;
+}
+
+// "policyTrain: 12000/100000 episodes, 31.2 per s, mean reward 0.41237 (valid 83.1 %),
+//  best validation 0.5512, 47 min 2 s left"
+class TrainingProgress {
+ public:
+  explicit TrainingProgress(long firstEpisode) : first_(firstEpisode) {}
+  void operator()(const PolicyTrainer& t, bool force) {
+    const double s = std::chrono::duration<double>(Clock::now() - start_).count();
+    if (!force && s - last_ < 10.0) return;
+    last_ = s;
+    const long done = t.episode() - first_;
+    const double rate = s > 0 ? done / s : 0.0;
+    const double left = rate > 0 ? (t.options().episodes - t.episode()) / rate : 0.0;
+    const std::vector<double> recent = t.buffer().recentRewards(1000);
+    double sum = 0;
+    int valid = 0;
+    for (double r : recent) {
+      sum += r;
+      valid += r > -1.0;
+    }
+    const double n = std::max<double>(1.0, static_cast<double>(recent.size()));
+    std::fprintf(stderr, "policyTrain: %ld/%ld episodes, %.1f per s, mean reward of the last %zu %.5f "
+                 "(valid %.1f %%), best validation %s, %s left\n",
+                 t.episode(), t.options().episodes, rate, recent.size(), sum / n, 100.0 * valid / n,
+                 std::isfinite(t.bestValidation()) ? std::to_string(t.bestValidation()).c_str() : "none yet",
+                 formatDuration(left).c_str());
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  long first_;
+  Clock::time_point start_ = Clock::now();
+  double last_ = 0;
+};
+
+int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& rollouts,
+          const PolicyEnvironment& environment, const PolicyTrainOptions& options) {
+  const PolicyTrainPaths paths(cli.caseDir());
+  PolicyTrainer trainer(options, environment, rollouts);
+  if (cli.values().count("resume")) {
+    trainer.resume(paths.checkpoint);
+    std::printf("policyTrain: resumed at episode %ld from %s\n", trainer.episode(), paths.checkpoint.c_str());
+  } else if (std::filesystem::exists(paths.checkpoint)) {
+    throw InputError(paths.checkpoint.string(), 0,
+                     "a checkpoint of an earlier run exists: continue it with -resume, or delete it");
+  }
+  std::printf("policyTrain: %ld episodes in batches of %d, networks %s, seed %llu, %s\n", options.episodes,
+              options.batchEpisodes, NetworkLayout{0, 0, options.hidden, options.leakySlope}.hiddenText().c_str(),
+              static_cast<unsigned long long>(options.seed), rollouts.description().c_str());
+  std::fflush(stdout);
+
+  std::vector<std::string> warnings;
+  TrainingProgress progress(trainer.episode());
+  PolicyTrainer::Events events;
+  events.afterBatch = [&](const PolicyTrainer& t) { progress(t, false); };
+  events.newBestValidation = [&](const PolicyTrainer& t) {
+    writePolicyFiles(paths.policy, t.learner(), PolicyProvenance{t.episode(), t.bestValidation(), command});
+  };
+  events.checkpointDue = [&](const PolicyTrainer& t) {
+    t.saveCheckpoint(paths.checkpoint);
+    writeLearningCurves(paths, t, &warnings);
+  };
+  const bool done = trainer.run(&installInterruptFlag(), events);
+  trainer.saveCheckpoint(paths.checkpoint);
+  const auto written = writeLearningCurves(paths, trainer, &warnings);
+  progress(trainer, true);
+  for (const auto& w : warnings) std::cerr << "policyTrain: warning: " << w << "\n";
+  if (!trainer.validationCurve().empty()) {
+    const ValidationRecord& v = trainer.validationCurve().back();
+    std::printf("policyTrain: last validation (episode %ld): mean reward %.17g, median %.17g, %d of %d valid; "
+                "best %.17g\n", v.episode, v.meanReward, v.medianReward, v.valid, v.passages,
+                trainer.bestValidation());
+  }
+  std::printf("  wrote %s\n", paths.checkpoint.c_str());
+  if (std::filesystem::exists(paths.policy)) std::printf("  wrote %s\n", paths.policy.c_str());
+  for (const auto& f : written) std::printf("  wrote %s\n", f.c_str());
+  if (!done) {
+    std::fprintf(stderr, "policyTrain: interrupted at episode %ld; continue with -resume\n", trainer.episode());
+    return interruptedExitCode;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+  // MPI starts before anything else reads the command line, as mpirun expects.
+  bool parallel = false;
+  for (int i = 1; i < argc; ++i)
+    parallel = parallel || std::string(argv[i]) == "-parallel" || std::string(argv[i]) == "--parallel";
+  std::optional<MpiSession> mpi;
+  if (parallel) mpi.emplace(argc, argv);
+  const bool worker = mpi && mpi->rank() != 0;
+
+  return runUtility("policyTrain", [&] {
+    CommandLine cli("policyTrain",
+                    "Trains the policy mapping a blade passage to its optimal meshing parameters\n"
+                    "(single-step actor-critic, docs/policy.md) on passages drawn from the\n"
+                    "sampler's ranges. Settings: system/policyTrainDict.xml. Ctrl-C stops after the\n"
+                    "batch under way and writes a checkpoint (exit code 130); -resume continues.");
+    cli.addOptions()
+        ("resume", "continue from policy/checkpoint.pt")
+        ("parallel", "spread the rollouts over MPI ranks (run under mpirun)")
+        ("episodes", po::value<long>(), "override <episodes> of the dictionary")
+        ("threads", po::value<int>(), "override <threads> of the dictionary (0 = all cores)");
+    if (!cli.parse(argc, argv)) return 0;
+    PolicyTrainOptions options = readPolicyTrainDict(cli.caseDir() / "system" / "policyTrainDict.xml");
+    if (cli.values().count("episodes")) {
+      options.episodes = cli.values()["episodes"].as<long>();
+      if (options.episodes < 1) throw InputError("command line: -episodes: at least 1");
+    }
+    if (cli.values().count("threads")) {
+      options.threads = cli.values()["threads"].as<int>();
+      if (options.threads < 0) throw InputError("command line: -threads: expected 0 (all cores) or more");
+    }
+    const PassageEnvironment environment;
+    if (worker) {
+      serveRollouts(*mpi, environment, options.threads);
+      return 0;
+    }
+    std::unique_ptr<RolloutEvaluator> rollouts;
+    if (mpi)
+      rollouts = std::make_unique<MpiRollouts>(*mpi, environment, options.threads);
+    else
+      rollouts = std::make_unique<ThreadRollouts>(options.threads);
+    return train(cli, commandText(argc, argv), *rollouts, environment, options);
+  });
+}
