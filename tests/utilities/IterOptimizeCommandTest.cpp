@@ -106,43 +106,8 @@ void expectUntouched(const fs::path& dir, const std::string& meshDict) {
   EXPECT_EQ(readText(dir / "system" / "meshDict.xml"), meshDict);
 }
 
-// Starts the tool in the background with its output in files; returns its process id.
 pid_t startTool(const fs::path& dir, const std::vector<std::string>& arguments) {
-  std::vector<std::string> words{iterOptimize, "-case", dir.string()};
-  words.insert(words.end(), arguments.begin(), arguments.end());
-  std::vector<char*> argv;
-  for (auto& w : words) argv.push_back(w.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t files;
-  posix_spawn_file_actions_init(&files);
-  posix_spawn_file_actions_addopen(&files, 1, (dir / "stdout.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&files, 2, (dir / "stderr.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  pid_t pid = -1;
-  const int failed = posix_spawn(&pid, iterOptimize.c_str(), &files, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&files);
-  return failed ? -1 : pid;
-}
-
-bool waitForText(const fs::path& file, const std::string& text, std::chrono::seconds limit) {
-  const auto end = std::chrono::steady_clock::now() + limit;
-  while (std::chrono::steady_clock::now() < end) {
-    if (readText(file).find(text) != std::string::npos) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  return false;
-}
-
-// waitpid's status, or kills the process and returns -1 when it does not end in time.
-int waitForExit(pid_t pid, std::chrono::seconds limit) {
-  const auto end = std::chrono::steady_clock::now() + limit;
-  int status = 0;
-  while (std::chrono::steady_clock::now() < end) {
-    if (waitpid(pid, &status, WNOHANG) == pid) return status;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  kill(pid, SIGKILL);
-  waitpid(pid, &status, 0);
-  return -1;
+  return startInBackground(iterOptimize, dir, arguments);
 }
 
 }  // namespace

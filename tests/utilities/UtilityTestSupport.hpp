@@ -1,12 +1,22 @@
 #pragma once
 // Running a utility on a throw-away case directory and reading what it printed.
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <chrono>
 #include <cstdlib>
+#include <thread>
+#include <vector>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include "../TestFiles.hpp"
+
+extern char** environ;
 
 namespace passageMesh::testData {
 
@@ -53,6 +63,46 @@ inline RunResult runCommand(const std::string& executable, const std::string& ar
 inline RunResult runTool(const std::string& executable, const std::filesystem::path& caseDir,
                          const std::string& arguments = "") {
   return runCommand(executable, "-case '" + caseDir.string() + "' " + arguments, caseDir);
+}
+
+// Starts `executable -case DIR ARGUMENTS...` in the background with its output in files; returns its process id.
+inline pid_t startInBackground(const std::string& executable, const std::filesystem::path& dir,
+                               const std::vector<std::string>& arguments) {
+  std::vector<std::string> words{executable, "-case", dir.string()};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (auto& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_addopen(&files, 1, (dir / "stdout.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&files, 2, (dir / "stderr.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = -1;
+  const int failed = posix_spawn(&pid, executable.c_str(), &files, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&files);
+  return failed ? -1 : pid;
+}
+
+inline bool waitForText(const std::filesystem::path& file, const std::string& text, std::chrono::seconds limit) {
+  const auto end = std::chrono::steady_clock::now() + limit;
+  while (std::chrono::steady_clock::now() < end) {
+    if (readText(file).find(text) != std::string::npos) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
+// waitpid's status, or kills the process and returns -1 when it does not end in time.
+inline int waitForExit(pid_t pid, std::chrono::seconds limit) {
+  const auto end = std::chrono::steady_clock::now() + limit;
+  int status = 0;
+  while (std::chrono::steady_clock::now() < end) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return status;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  kill(pid, SIGKILL);
+  waitpid(pid, &status, 0);
+  return -1;
 }
 
 }  // namespace passageMesh::testData

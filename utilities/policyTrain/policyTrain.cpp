@@ -4,6 +4,7 @@
 // settings and the results.
 //   reads  system/policyTrainDict.xml (optional; every key has a default)
 //   writes policy/policy.xml + policy.pt (the best policy by validation so far),
+//          policy/final.xml + final.pt (the last weights),
 //          policy/checkpoint.pt, postProcessing/policyTrain/{learning,validation}.csv,
 //          learning.png
 // -resume continues from policy/checkpoint.pt; -parallel under mpirun spreads the
@@ -100,6 +101,10 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
   };
   const bool done = trainer.run(&installInterruptFlag(), events);
   trainer.saveCheckpoint(paths.checkpoint);
+  writePolicyFiles(paths.finalPolicy, trainer.learner(),
+                   PolicyProvenance{trainer.episode(),
+                                    trainer.validationCurve().empty() ? 0.0 : trainer.validationCurve().back().meanReward,
+                                    command});
   const auto written = writeLearningCurves(paths, trainer, &warnings);
   progress(trainer, true);
   for (const auto& w : warnings) std::cerr << "policyTrain: warning: " << w << "\n";
@@ -109,7 +114,7 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
                 "best %.17g\n", v.episode, v.meanReward, v.medianReward, v.valid, v.passages,
                 trainer.bestValidation());
   }
-  std::printf("  wrote %s\n", paths.checkpoint.c_str());
+  std::printf("  wrote %s\n  wrote %s\n", paths.checkpoint.c_str(), paths.finalPolicy.c_str());
   if (std::filesystem::exists(paths.policy)) std::printf("  wrote %s\n", paths.policy.c_str());
   for (const auto& f : written) std::printf("  wrote %s\n", f.c_str());
   if (!done) {

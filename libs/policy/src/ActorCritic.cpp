@@ -28,11 +28,13 @@ struct ActorCritic::Networks {
   torch::optim::Adam criticOptimizer;
 };
 
-ActorCritic::ActorCritic(const NetworkLayout& layout, const LearningRates& rates, std::uint64_t seed) {
+ActorCritic::ActorCritic(const NetworkLayout& layout, const LearningRates& rates, std::uint64_t seed,
+                         const std::vector<double>& startAction) {
   // The networks are built right after seeding LibTorch's generator, so their first
   // weights depend on the seed only.
   torch::manual_seed(seed);
   networks_ = std::make_unique<Networks>(layout, rates);
+  if (!startAction.empty()) networks_->actor->startAt(startAction, 0.1);
 }
 
 ActorCritic::~ActorCritic() = default;

@@ -145,9 +145,17 @@ Policy Policy::load(const std::filesystem::path& xmlFile) {
     throw InputError(d.source(), d.line("actor"), "the actor file " + actorFile.string() + " does not exist");
   a.network = makeActor(a.layout);
   try {
+    // LibTorch's load takes each tensor's shape from the file, so the shapes the layout
+    // asks for are compared afterwards.
+    std::vector<std::vector<long>> shapes;
+    for (const auto& p : a.network->parameters()) shapes.push_back(p.sizes().vec());
     torch::serialize::InputArchive archive;
     archive.load_from(actorFile.string());
     a.network->load(archive);
+    const auto loaded = a.network->parameters();
+    bool same = loaded.size() == shapes.size();
+    for (std::size_t k = 0; same && k < shapes.size(); ++k) same = loaded[k].sizes().vec() == shapes[k];
+    if (!same) throw std::runtime_error("its weight shapes differ");
   } catch (const std::exception& e) {
     std::string what = e.what();
     what = what.substr(0, what.find('\n'));

@@ -30,6 +30,11 @@ PassageEnvironment::PassageEnvironment() : PassageEnvironment(BladeParameterRang
 int PassageEnvironment::stateSize() const { return policyStateSize; }
 int PassageEnvironment::actionSize() const { return policyActionSize; }
 
+std::vector<double> PassageEnvironment::defaultAction() const {
+  const PolicyAction a = policyAction(MeshingParameters::defaults(1.0), 1.0);
+  return {a.begin(), a.end()};
+}
+
 EpisodeTask PassageEnvironment::draw(std::uint64_t seed, std::uint64_t episode) const {
   std::mt19937_64 rng = episodeRandom(seed, episode, 0);
   BladeSampler sampler(range_, rng());

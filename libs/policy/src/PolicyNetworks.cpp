@@ -1,5 +1,8 @@
 #include "passageMesh/policy/PolicyNetworks.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace passageMesh {
 
 FullyConnectedImpl::FullyConnectedImpl(int inputs, const std::vector<int>& hidden, int outputs,
@@ -16,6 +19,17 @@ FullyConnectedImpl::FullyConnectedImpl(int inputs, const std::vector<int>& hidde
 }
 
 torch::Tensor FullyConnectedImpl::forward(torch::Tensor x) { return layers_->forward(x); }
+
+void FullyConnectedImpl::startAt(const std::vector<double>& output, double weightScale) {
+  torch::NoGradGuard noGrad;
+  const bool tanhOutput = layers_->ptr(layers_->size() - 1)->as<torch::nn::Tanh>() != nullptr;
+  auto* last = layers_->ptr(layers_->size() - (tanhOutput ? 2 : 1))->as<torch::nn::Linear>();
+  last->weight.mul_(weightScale);
+  for (std::size_t k = 0; k < output.size() && static_cast<long>(k) < last->bias.size(0); ++k) {
+    const double v = tanhOutput ? std::atanh(std::clamp(output[k], -0.95, 0.95)) : output[k];
+    last->bias[static_cast<long>(k)] = v;
+  }
+}
 
 FullyConnected makeActor(const NetworkLayout& layout) {
   return FullyConnected(layout.stateSize, layout.hidden, layout.actionSize, layout.leakySlope, true);

@@ -11,6 +11,7 @@ namespace fs = std::filesystem;
 
 PolicyTrainPaths::PolicyTrainPaths(const fs::path& caseDir)
     : policy(caseDir / "policy" / "policy.xml"),
+      finalPolicy(caseDir / "policy" / "final.xml"),
       checkpoint(caseDir / "policy" / "checkpoint.pt"),
       learningCsv(caseDir / "postProcessing" / "policyTrain" / "learning.csv"),
       validationCsv(caseDir / "postProcessing" / "policyTrain" / "validation.csv"),

@@ -111,6 +111,14 @@ const std::vector<Key>& keys() {
       {"validationSeed", readInteger("validationSeed", &O::validationSeed, 0), [](const O& o) { return std::to_string(o.validationSeed); }},
       {"checkpointEvery", readInteger("checkpointEvery", &O::checkpointEvery, 1), [](const O& o) { return std::to_string(o.checkpointEvery); }},
       {"logEvery", readInteger("logEvery", &O::logEvery, 1), [](const O& o) { return std::to_string(o.logEvery); }},
+      {"actorStart",
+       [](const Dictionary& d, O& o) {
+         const std::string v = d.text("actorStart");
+         if (v != "random" && v != "defaults")
+           throw InputError(d.source(), d.line("actorStart"), "<actorStart> is 'random' or 'defaults', not '" + v + "'");
+         o.actorStart = v;
+       },
+       [](const O& o) { return o.actorStart; }},
       {"seed", readInteger("seed", &O::seed, 0), [](const O& o) { return std::to_string(o.seed); }},
       {"threads", readInteger("threads", &O::threads, 0), [](const O& o) { return std::to_string(o.threads); }},
   };

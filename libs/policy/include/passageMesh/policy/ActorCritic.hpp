@@ -24,8 +24,10 @@ struct LearningRates {
 
 class ActorCritic {
  public:
-  // Weights initialised by LibTorch's default rule from `seed`.
-  ActorCritic(const NetworkLayout& layout, const LearningRates& rates, std::uint64_t seed);
+  // Weights initialised by LibTorch's default rule from `seed`. A non-empty `startAction`
+  // makes the actor start near that action for every state (FullyConnectedImpl::startAt).
+  ActorCritic(const NetworkLayout& layout, const LearningRates& rates, std::uint64_t seed,
+              const std::vector<double>& startAction = {});
   ~ActorCritic();
   ActorCritic(ActorCritic&&) noexcept;
   ActorCritic& operator=(ActorCritic&&) noexcept;

@@ -25,6 +25,9 @@ class PolicyEnvironment {
   virtual int stateSize() const = 0;
   virtual int actionSize() const = 0;
   virtual EpisodeTask draw(std::uint64_t seed, std::uint64_t episode) const = 0;
+  // A known reasonable action for every state, where there is one (the actor may start
+  // there); empty otherwise.
+  virtual std::vector<double> defaultAction() const { return {}; }
 };
 
 // The random stream `stream` of episode `episode` under `seed`: independent streams
@@ -43,6 +46,8 @@ class PassageEnvironment final : public PolicyEnvironment {
   int stateSize() const override;
   int actionSize() const override;
   EpisodeTask draw(std::uint64_t seed, std::uint64_t episode) const override;
+  // The action of etc/meshDictDefaults.xml (the same for every chord).
+  std::vector<double> defaultAction() const override;
 
  private:
   BladeParameterRange range_;

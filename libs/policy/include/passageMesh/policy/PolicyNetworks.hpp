@@ -20,6 +20,10 @@ class FullyConnectedImpl : public torch::nn::Module {
   FullyConnectedImpl(int inputs, const std::vector<int>& hidden, int outputs, double leakySlope,
                      bool tanhOutput);
   torch::Tensor forward(torch::Tensor x);
+  // Makes the output start near `output` for every input: the last layer's weights are
+  // scaled by `weightScale` and its bias set so that the output is `output` at zero
+  // weights (through atanh for a tanh output; values clipped to +-0.95 there).
+  void startAt(const std::vector<double>& output, double weightScale);
 
  private:
   torch::nn::Sequential layers_;

@@ -1,6 +1,7 @@
 #pragma once
 // What policyTrain leaves in a case (docs/file-formats.md "policyTrain outputs"):
 //   policy/policy.xml, policy/policy.pt   the actor of the best validation so far (Policy.hpp)
+//   policy/final.xml, policy/final.pt     the actor as the run (or its interruption) left it
 //   policy/checkpoint.pt                  everything -resume needs (PolicyTrainer)
 //   postProcessing/policyTrain/learning.csv    episode, meanReward, validFraction,
 //                                              criticLoss, sigma, seconds
@@ -18,7 +19,7 @@ namespace passageMesh {
 
 struct PolicyTrainPaths {
   explicit PolicyTrainPaths(const std::filesystem::path& caseDir);
-  std::filesystem::path policy, checkpoint, learningCsv, validationCsv, learningPng;
+  std::filesystem::path policy, finalPolicy, checkpoint, learningCsv, validationCsv, learningPng;
 };
 
 // Writes both CSVs and the picture; returns the files written. A missing gnuplot is a

@@ -33,6 +33,10 @@ struct PolicyTrainOptions {
   std::uint64_t validationSeed = 20261202;  // their stream (not the training stream)
   long checkpointEvery = 5000;    // episodes between checkpoints
   long logEvery = 1000;           // episodes between learning-curve rows
+  // The actor's first weights: "random" (LibTorch's default, the paper's) or "defaults"
+  // (random, then moved so that it starts at the environment's default action, for the
+  // passages etc/meshDictDefaults.xml; docs/policy.md measures both).
+  std::string actorStart = "defaults";
   std::uint64_t seed = 1;         // weights, episodes, noise and minibatches
   int threads = 0;                // rollout threads per process (0 = all cores)
 

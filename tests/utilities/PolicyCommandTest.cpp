@@ -1,0 +1,146 @@
+// policyTrain and policyMesh as a user runs them: files, -resume after SIGKILL, MPI ranks,
+// bad input.
+#include <gtest/gtest.h>
+
+#include "../blade/BladeTestData.hpp"
+#include "UtilityTestSupport.hpp"
+#include "passageMesh/blade/BladeParametersFile.hpp"
+
+using namespace passageMesh;
+using namespace passageMesh::testData;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string policyTrain = POLICYTRAIN_EXECUTABLE;
+const std::string policyMesh = POLICYMESH_EXECUTABLE;
+
+// A short training on small networks: checkpoints every 32 episodes.
+fs::path trainingCase(const std::string& name, long episodes) {
+  const fs::path dir = freshCase(name);
+  writeText(dir / "system" / "policyTrainDict.xml",
+            "<policyTrainDict>\n  <episodes>" + std::to_string(episodes) +
+                "</episodes>\n  <batchEpisodes>16</batchEpisodes>\n  <minibatch>20</minibatch>\n"
+                "  <hiddenLayers>32 32</hiddenLayers>\n  <validationEvery>64</validationEvery>\n"
+                "  <validationPassages>6</validationPassages>\n  <checkpointEvery>32</checkpointEvery>\n"
+                "  <logEvery>16</logEvery>\n  <threads>2</threads>\n</policyTrainDict>\n");
+  return dir;
+}
+
+// A case policyMesh can mesh: the typical turbine blade at a mid-range condition.
+fs::path meshCase(const std::string& name) {
+  const fs::path dir = freshCase(name);
+  writeBladeParametersFile(dir / "constant" / "bladeParameters.xml", typicalTurbineBlade(), {});
+  writeText(dir / "system" / "passageDict.xml",
+            "<passageDict><pitch>0.7c</pitch><xIn>0.5c</xIn><xOut>0.5c</xOut><nO>12000</nO>"
+            "<firstCellHeight>1e-4c</firstCellHeight></passageDict>\n");
+  return dir;
+}
+
+}  // namespace
+
+TEST(PolicyTrainCommand, WritesPolicyCheckpointAndCurvesAndResumesBitForBitAfterSigkill) {
+  const fs::path straight = trainingCase("policyTrainStraight", 256);
+  const RunResult r = runTool(policyTrain, straight);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* f : {"policy/policy.xml", "policy/policy.pt", "policy/final.xml", "policy/final.pt",
+                        "policy/checkpoint.pt", "postProcessing/policyTrain/learning.csv",
+                        "postProcessing/policyTrain/validation.csv"})
+    EXPECT_TRUE(fs::exists(straight / f)) << f;
+  EXPECT_NE(r.err.find("256/256 episodes"), std::string::npos) << r.err;
+  const std::string validation = readText(straight / "postProcessing/policyTrain/validation.csv");
+  EXPECT_EQ(validation.rfind("episode,meanReward,medianReward,valid,passages\n64,", 0), 0u) << validation;
+
+  // A second run of the same case refuses to overwrite the checkpoint.
+  const RunResult again = runTool(policyTrain, straight);
+  EXPECT_EQ(again.exitCode, 1);
+  EXPECT_NE(again.err.find("-resume"), std::string::npos) << again.err;
+
+  // Killed (SIGKILL) after its first checkpoint, then resumed: the same final weights.
+  const fs::path killed = trainingCase("policyTrainKilled", 256);
+  const pid_t pid = startInBackground(policyTrain, killed, {});
+  ASSERT_GT(pid, 0);
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(killed / "policy" / "checkpoint.pt") && std::chrono::steady_clock::now() < end)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed; make it longer";
+  EXPECT_FALSE(fs::exists(killed / "policy" / "final.pt"));
+  const RunResult resumed = runTool(policyTrain, killed, "-resume");
+  ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("resumed at episode"), std::string::npos) << resumed.out;
+  EXPECT_EQ(readText(killed / "policy" / "final.pt"), readText(straight / "policy" / "final.pt"));
+  EXPECT_EQ(readText(killed / "postProcessing/policyTrain/validation.csv"), validation);
+}
+
+TEST(PolicyTrainCommand, TwoMpiRanksGiveTheWeightsOfTwoThreads) {
+  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "no mpirun";
+  // Open MPI refuses root without these (CI runs as root) and two ranks on few cores.
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 1);
+  const fs::path threads = trainingCase("policyTrainThreads", 64);
+  ASSERT_EQ(runTool(policyTrain, threads).exitCode, 0);
+  const fs::path ranks = trainingCase("policyTrainRanks", 64);
+  const RunResult r = runCommand("mpirun", "-np 2 '" + policyTrain + "' -case '" + ranks.string() +
+                                               "' -parallel -threads 1", ranks);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("2 MPI ranks"), std::string::npos) << r.out;
+  EXPECT_EQ(readText(ranks / "policy" / "final.pt"), readText(threads / "policy" / "final.pt"));
+}
+
+TEST(PolicyMeshCommand, MeshesWithATrainedPolicyAndRefusesBadPolicyFiles) {
+  const fs::path trained = trainingCase("policyForMesh", 32);
+  ASSERT_EQ(runTool(policyTrain, trained).exitCode, 0);
+  const fs::path policyXml = trained / "policy" / "final.xml";
+
+  const fs::path dir = meshCase("policyMesh");
+  const RunResult r = runTool(policyMesh, dir, "-policy '" + policyXml.string() + "'");
+  // An untrained policy may well fold the mesh; either way the parameters are written and
+  // the outcome is reported on one line.
+  EXPECT_TRUE(fs::exists(dir / "system" / "meshDict.xml"));
+  EXPECT_NE(r.out.find("forward pass"), std::string::npos) << r.out;
+  if (r.exitCode == 0) {
+    EXPECT_NE(r.out.find("policyMesh: Q = "), std::string::npos) << r.out;
+    EXPECT_TRUE(fs::exists(dir / "mesh" / "passage.cgns"));
+  } else {
+    EXPECT_NE(r.err.find("the mesh is invalid"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "mesh" / "passage.cgns"));
+  }
+
+  const auto refused = [&](const std::string& name, const std::string& policyArgument,
+                           const std::string& expected) {
+    const fs::path c = meshCase(name);
+    const RunResult bad = runTool(policyMesh, c, "-policy '" + policyArgument + "'");
+    EXPECT_EQ(bad.exitCode, 1) << name;
+    EXPECT_NE(bad.err.find(expected), std::string::npos) << name << ": " << bad.err;
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+    EXPECT_FALSE(fs::exists(c / "system" / "meshDict.xml")) << name;
+    EXPECT_FALSE(fs::exists(c / "mesh")) << name;
+  };
+  refused("missingPolicy", (trained / "policy" / "nothing.xml").string(), "nothing.xml: no such policy file");
+
+  const fs::path corrupt = trained / "corrupt";
+  fs::create_directories(corrupt);
+  fs::copy_file(policyXml, corrupt / "final.xml");
+  writeText(corrupt / "final.pt", "garbage");
+  refused("corruptActor", (corrupt / "final.xml").string(), "final.pt");
+
+  const fs::path wider = trained / "wider";
+  fs::create_directories(wider);
+  std::string xml = readText(policyXml);
+  xml.replace(xml.find("<hiddenLayers>32 32<"), 20, "<hiddenLayers>32 64<");
+  writeText(wider / "final.xml", xml);
+  fs::copy_file(trained / "policy" / "final.pt", wider / "final.pt");
+  refused("layoutMismatch", (wider / "final.xml").string(), "not an actor of the layout");
+
+  const fs::path otherRange = trained / "otherRange";
+  fs::create_directories(otherRange);
+  xml = readText(policyXml);
+  xml.replace(xml.find("<actionUpper>0.5 "), 17, "<actionUpper>0.6 ");
+  writeText(otherRange / "final.xml", xml);
+  fs::copy_file(trained / "policy" / "final.pt", otherRange / "final.pt");
+  refused("scalingMismatch", (otherRange / "final.xml").string(), "actionUpper");
+}
