@@ -18,6 +18,7 @@
 #include "passageMesh/core/InputError.hpp"
 #include "passageMesh/core/InterruptFlag.hpp"
 #include "passageMesh/passage/PassageCase.hpp"
+#include "passageMesh/policy/DrlOptimizer.hpp"
 #include "passageMesh/workflow/MeshingOptimization.hpp"
 #include "passageMesh/workflow/MeshingOptimizationFiles.hpp"
 #include "passageMesh/workflow/OptimizationProgressLine.hpp"
@@ -73,6 +74,7 @@ void printBest(const MeshingOptimization& run) {
 }  // namespace
 
 int main(int argc, char* argv[]) {
+  registerDrlOptimizer();
   return runUtility("iterOptimize", [&] {
     CommandLine cli("iterOptimize",
                     "Finds the meshing parameters of the best mesh quality Q for the case's\n"

@@ -1,14 +1,22 @@
 #include "passageMesh/optimize/Optimizer.hpp"
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 
 #include "Methods.hpp"
 
 namespace passageMesh {
 
-const std::vector<std::string>& optimizerMethods() {
-  static const std::vector<std::string> names = [] {
+namespace {
+
+std::map<std::string, ExternalOptimizerMethod>& externalMethods() {
+  static std::map<std::string, ExternalOptimizerMethod> methods;
+  return methods;
+}
+
+std::vector<std::string>& methodNames() {
+  static std::vector<std::string> names = [] {
     std::vector<std::string> all{"cmaes"};
     const auto& nlopt = optimizeDetail::nloptMethodNames();
     all.insert(all.end(), nlopt.begin(), nlopt.end());
@@ -16,6 +24,16 @@ const std::vector<std::string>& optimizerMethods() {
   }();
   return names;
 }
+
+}  // namespace
+
+void registerOptimizerMethod(const std::string& name, ExternalOptimizerMethod method) {
+  auto& names = methodNames();
+  if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  externalMethods()[name] = std::move(method);
+}
+
+const std::vector<std::string>& optimizerMethods() { return methodNames(); }
 
 OptimizationResult optimize(const BoxProblem& problem, const BatchObjective& objective,
                             const OptimizerOptions& options) {
@@ -36,8 +54,17 @@ OptimizationResult optimize(const BoxProblem& problem, const BatchObjective& obj
       throw std::invalid_argument("optimize: the start point is not in the box");
   }
   optimizeDetail::EvaluationLog log(problem, objective, options);
-  const int starts = options.method == "cmaes" ? optimizeDetail::runCmaEs(log)
-                                               : optimizeDetail::runNlopt(log, options.method);
+  int starts = 0;
+  if (const auto external = externalMethods().find(options.method); external != externalMethods().end()) {
+    const Eigen::VectorXd unitStart = options.start ? problem.toUnit(*options.start)
+                                                    : Eigen::VectorXd::Constant(problem.dimension(), 0.5);
+    starts = external->second(problem.dimension(), unitStart,
+                              [&log](const std::vector<Eigen::VectorXd>& points) { return log.evaluate(points); },
+                              options);
+  } else {
+    starts = options.method == "cmaes" ? optimizeDetail::runCmaEs(log)
+                                       : optimizeDetail::runNlopt(log, options.method);
+  }
   return log.result(options.method, starts);
 }
 

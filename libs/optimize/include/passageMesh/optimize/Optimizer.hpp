@@ -6,6 +6,8 @@
 //            budget go to a pattern search from the best point (one mesh at a time)
 //   bobyqa, sbplx, cobyla    NLopt's local methods, restarted from random points
 //   crs2lm, isres            NLopt's global methods, restarted likewise
+//   drl      the paper's single-step actor-critic with the condition fixed (registered by
+//            the policy library, DrlOptimizer.hpp)
 // A run is deterministic for a seed: the same options give the same history whatever the
 // number of threads.
 #include <Eigen/Core>
@@ -65,6 +67,18 @@ struct OptimizationResult {
   bool stopped = false;      // ended by the stop flag before the budget was used
   OptimizationHistory history;
 };
+
+// A method defined in a library above this one (the policy library's "drl"). It searches
+// the unit cube [0, 1]^dimension, handing batches of points to `evaluate`, which returns
+// their values: all of them, the first ones only when the budget ends, none when the
+// stop flag is set (the method must then return). Returns the number of starts it made.
+using UnitCubeEvaluator = std::function<std::vector<double>(const std::vector<Eigen::VectorXd>&)>;
+using ExternalOptimizerMethod = std::function<int(int dimension, const Eigen::VectorXd& unitStart,
+                                                  const UnitCubeEvaluator& evaluate,
+                                                  const OptimizerOptions& options)>;
+// Makes `name` selectable (optimizerMethods lists it last); registering a name again
+// replaces the method. Not thread-safe: register before optimising.
+void registerOptimizerMethod(const std::string& name, ExternalOptimizerMethod method);
 
 // The selectable method names, the default first.
 const std::vector<std::string>& optimizerMethods();
