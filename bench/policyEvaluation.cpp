@@ -1,0 +1,101 @@
+// policyEvaluation: a policy (or the defaults) on sampler passages, against the best an
+// optimiser finds for each passage (issue 12 must-show: one-shot Q / iterative best).
+//   policyEvaluation POLICY.xml|defaults SEED COUNT [BUDGET [OUT.csv]]
+// Passages are PassageEnvironment's episodes 0..COUNT-1 of stream SEED (policyTrain's
+// validation set is stream 20261202, episodes 0..49). With BUDGET > 0, CMA-ES
+// (iterOptimize's default method) searches each passage's meshing parameters from the
+// defaults with that many meshes; the ratio is one-shot Q / that best. Prints a summary
+// and writes one row per passage to OUT.csv (default: stdout only).
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "passageMesh/core/ParallelFor.hpp"
+#include "passageMesh/optimize/Optimizer.hpp"
+#include "passageMesh/policy/Policy.hpp"
+#include "passageMesh/policy/PolicyEnvironment.hpp"
+
+using namespace passageMesh;
+
+int main(int argc, char* argv[]) {
+  if (argc < 4) {
+    std::fprintf(stderr, "usage: policyEvaluation POLICY.xml|defaults SEED COUNT [BUDGET [OUT.csv]]\n");
+    return 2;
+  }
+  const std::string which = argv[1];
+  const std::uint64_t seed = std::stoull(argv[2]);
+  const int count = std::stoi(argv[3]);
+  const long budget = argc > 4 ? std::stol(argv[4]) : 0;
+  const PassageEnvironment environment;
+  std::optional<Policy> policy;
+  if (which != "defaults") policy = Policy::load(which);
+
+  struct Row {
+    double oneShot = -1, best = -1;
+  };
+  std::vector<Row> rows(static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) {
+    const EpisodeTask task = environment.draw(seed, static_cast<std::uint64_t>(i));
+    std::vector<double> action = environment.defaultAction();
+    if (policy) {
+      PolicyState s;
+      std::copy(task.state.begin(), task.state.end(), s.begin());
+      const PolicyAction a = policy->act(s);
+      action.assign(a.begin(), a.end());
+    }
+    Row& row = rows[static_cast<std::size_t>(i)];
+    row.oneShot = task.reward(action);
+    if (budget > 0) {
+      BoxProblem box;
+      box.lower = Eigen::VectorXd::Constant(policyActionSize, -1.0);
+      box.upper = Eigen::VectorXd::Constant(policyActionSize, 1.0);
+      OptimizerOptions options;
+      options.budget = budget;
+      options.seed = 1;
+      const std::vector<double> start = environment.defaultAction();
+      options.start = Eigen::Map<const Eigen::VectorXd>(start.data(), policyActionSize);
+      const PointObjective q = [&task](const Eigen::VectorXd& x) {
+        return task.reward(std::vector<double>(x.data(), x.data() + x.size()));
+      };
+      row.best = std::max(row.oneShot, optimize(box, evaluateInParallel(q, 0), options).bestValue);
+    }
+    std::fprintf(stderr, "passage %d: one-shot Q %.6f%s\n", i, row.oneShot,
+                 budget > 0 ? (", best " + std::to_string(row.best)).c_str() : "");
+  }
+
+  std::string csv = "passage,oneShotQ,bestQ,ratio\n";
+  std::vector<double> q, ratios;
+  int valid = 0, bothValid = 0;
+  for (int i = 0; i < count; ++i) {
+    const Row& r = rows[static_cast<std::size_t>(i)];
+    q.push_back(r.oneShot);
+    valid += r.oneShot > -1;
+    double ratio = -1;
+    if (budget > 0 && r.best > 0) {
+      ratio = r.oneShot > -1 ? r.oneShot / r.best : 0.0;
+      ratios.push_back(ratio);
+      bothValid += r.oneShot > -1;
+    }
+    char line[160];
+    std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g\n", i, r.oneShot, r.best, ratio);
+    csv += line;
+  }
+  const auto median = [](std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+  };
+  double mean = 0;
+  for (double v : q) mean += v;
+  std::printf("%s on %d passages of stream %llu: mean reward %.6f, median %.6f, %d valid\n", which.c_str(), count,
+              static_cast<unsigned long long>(seed), mean / count, median(q), valid);
+  if (budget > 0)
+    std::printf("  against CMA-ES with %ld meshes from the defaults: %zu passages with a valid best; ratio "
+                "one-shot / best: median %.4f, worst %.4f (an invalid one-shot mesh counts 0); %d both valid\n",
+                budget, ratios.size(), median(ratios),
+                ratios.empty() ? 0.0 : *std::min_element(ratios.begin(), ratios.end()), bothValid);
+  if (argc > 5) std::ofstream(argv[5]) << csv;
+  return 0;
+}
