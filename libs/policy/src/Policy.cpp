@@ -78,7 +78,7 @@ void writePolicyFiles(const std::filesystem::path& xmlFile, const ActorCritic& l
   const NetworkLayout& layout = learner.layout();
   Dictionary d("policy");
   d.setComment(
-      "passageMesh trained policy (docs/file-formats.md). The actor maps the state, scaled to "
+      "passageMesh trained policy (docs/case-format.md). The actor maps the state, scaled to "
       "[-1, 1] linearly from [stateLower, stateUpper], to the action in [-1, 1], scaled to the "
       "meshing parameters from [actionLower, actionUpper] (lengths in chords).");
   d.set("format", policyFormat);

@@ -1,5 +1,5 @@
 #pragma once
-// A trained policy on disk and in use (docs/file-formats.md "Policy files"):
+// A trained policy on disk and in use (docs/case-format.md "Policy files"):
 //   NAME.xml  its description: format version, the actor file's name, the layers, the
 //             state and action names in order with the ranges that scale them to [-1, 1]
 //   NAME.pt   the actor's weights, LibTorch's own serialisation; Python reads them by name

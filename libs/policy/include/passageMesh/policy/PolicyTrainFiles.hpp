@@ -1,5 +1,5 @@
 #pragma once
-// What policyTrain leaves in a case (docs/file-formats.md "policyTrain outputs"):
+// What policyTrain leaves in a case (docs/case-format.md "policyTrain outputs"):
 //   policy/policy.xml, policy/policy.pt   the actor of the best validation so far (Policy.hpp)
 //   policy/final.xml, policy/final.pt     the actor as the run (or its interruption) left it
 //   policy/checkpoint.pt                  everything -resume needs (PolicyTrainer)
