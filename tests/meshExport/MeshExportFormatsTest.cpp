@@ -3,6 +3,9 @@
 #include <cgnslib.h>
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -171,13 +174,56 @@ TEST(StagedOutputs, DirectoryReplacedWholeOnlyOnCommit) {
   EXPECT_THROW(staged.stage(dir / "target", false), std::runtime_error);  // a directory, not a file
 }
 
+// Reads the Fortran records of plot3dBinary back (on a little-endian host, as CI's).
+TEST(Plot3dFile, BinaryHoldsTheAsciiNumbersInFramedLittleEndianRecords) {
+  static_assert(std::endian::native == std::endian::little, "this test reads host-order bytes");
+  const HohMesh hoh = validHohMesh();
+  const std::string bytes = plot3dBinary(hoh.mesh, 0.5);
+  std::istringstream ascii(plot3dAscii(hoh.mesh, 0.5));
+  std::size_t at = 0;
+  const auto record = [&] {
+    std::int32_t length = 0, end = 0;
+    std::memcpy(&length, bytes.data() + at, 4);
+    std::string payload = bytes.substr(at + 4, static_cast<std::size_t>(length));
+    std::memcpy(&end, bytes.data() + at + 4 + length, 4);
+    EXPECT_EQ(end, length);
+    at += 8 + static_cast<std::size_t>(length);
+    return payload;
+  };
+  const auto ints = [](const std::string& payload) {
+    std::vector<std::int32_t> v(payload.size() / 4);
+    std::memcpy(v.data(), payload.data(), payload.size());
+    return v;
+  };
+  const std::vector<std::int32_t> count = ints(record());
+  ASSERT_EQ(count, std::vector<std::int32_t>{3});
+  const std::vector<std::int32_t> dims = ints(record());
+  ASSERT_EQ(dims.size(), 9u);
+  int asciiInt = 0;
+  for (int i = 0; i < 10; ++i) {
+    ascii >> asciiInt;
+    EXPECT_EQ(asciiInt, i == 0 ? 3 : dims[static_cast<std::size_t>(i - 1)]);
+  }
+  for (int b = 0; b < 3; ++b) {
+    const std::string payload = record();
+    ASSERT_EQ(payload.size(), 8u * 3u * 2u * static_cast<std::size_t>(dims[3 * b] * dims[3 * b + 1]));
+    for (std::size_t n = 0; n < payload.size() / 8; ++n) {
+      double v = 0, expected = 0;
+      std::memcpy(&v, payload.data() + 8 * n, 8);
+      ascii >> expected;
+      ASSERT_EQ(v, expected) << "block " << b << " value " << n;
+    }
+  }
+  EXPECT_EQ(at, bytes.size());
+}
+
 TEST(MeshExport, AllFormatsWrittenIntoTheCase) {
   const HohMesh hoh = validHohMesh();
   const fs::path dir = tempFolder("exportCase");
   fs::remove_all(dir);
   fs::create_directories(dir);
   const auto written = exportMesh(hoh.mesh, dir, {ExportFormat::foam, ExportFormat::plot3d, ExportFormat::su2cgns});
-  EXPECT_EQ(written.size(), 4u);
+  EXPECT_EQ(written.size(), 5u);
   for (const auto& p : written) EXPECT_TRUE(fs::exists(dir / p)) << p;
   for (const char* f : {"points", "faces", "owner", "neighbour", "boundary"})
     EXPECT_TRUE(fs::exists(dir / "constant" / "polyMesh" / f)) << f;

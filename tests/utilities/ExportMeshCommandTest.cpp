@@ -34,7 +34,7 @@ TEST(ExportMeshCommand, WritesEveryFormat) {
   const auto dir = caseWithMesh("all");
   const RunResult r = runTool(exportMeshTool, dir, "-format foam,plot3d,su2cgns");
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  for (const char* f : {"constant/polyMesh/boundary", "constant/polyMesh/faces", "mesh/passage.xyz",
+  for (const char* f : {"constant/polyMesh/boundary", "constant/polyMesh/faces", "mesh/passage.xyz", "mesh/passage.x",
                         "mesh/passageSU2.cgns", "mesh/passageSU2.cfg"})
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
 }

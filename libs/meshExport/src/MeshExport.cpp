@@ -61,9 +61,10 @@ std::vector<fs::path> exportMesh(const StructuredMesh& mesh, const fs::path& cas
         break;
       }
       case ExportFormat::plot3d: {
-        const fs::path target = fs::path("mesh") / "passage.xyz";
-        writeText(staged.stage(caseDir / target, false), plot3dAscii(mesh, thickness));
-        written.push_back(target);
+        const fs::path ascii = fs::path("mesh") / "passage.xyz", binary = fs::path("mesh") / "passage.x";
+        writeText(staged.stage(caseDir / ascii, false), plot3dAscii(mesh, thickness));
+        writeText(staged.stage(caseDir / binary, false), plot3dBinary(mesh, thickness));
+        written.insert(written.end(), {ascii, binary});
         break;
       }
       case ExportFormat::su2cgns: {

@@ -1,7 +1,7 @@
 #pragma once
 // exportMesh's work: the case's mesh in the formats solvers read (docs/case-format.md).
 //   foam     constant/polyMesh/ (FoamPolyMesh.hpp), replaced whole
-//   plot3d   mesh/passage.xyz (Plot3dFile.hpp)
+//   plot3d   mesh/passage.xyz (ASCII) and mesh/passage.x (binary) (Plot3dFile.hpp)
 //   su2cgns  mesh/passageSU2.cgns and mesh/passageSU2.cfg (Su2Cgns.hpp)
 // Every format is written to temporaries first and all are moved into place together
 // (StagedOutputs), so a failure leaves the case as it was.

@@ -15,4 +15,11 @@ namespace passageMesh {
 
 std::string plot3dAscii(const StructuredMesh& mesh, double thickness);
 
+// The same grid as Fortran unformatted sequential records (what NASA's Plot3D readers and
+// most structured solvers call "binary"), little-endian whatever the host: each record is
+// framed by its byte count as a 32-bit integer before and after it. Records: the block
+// count (int32); ni, nj, 2 of every block (int32); then one record per block holding its
+// x, y and z (float64, in the order of the ASCII form).
+std::string plot3dBinary(const StructuredMesh& mesh, double thickness);
+
 }  // namespace passageMesh
