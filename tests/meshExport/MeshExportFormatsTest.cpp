@@ -133,6 +133,33 @@ TEST(Su2Cgns, ZoneReadsBackWithSectionsAndConfig) {
     EXPECT_EQ(static_cast<std::size_t>(end - start + 1), expected[s - 1].second) << name;
     EXPECT_EQ(type, s == 1 ? CGNS_ENUMV(QUAD_4) : CGNS_ENUMV(BAR_2)) << name;
   }
+  // The periodic pair in CGNS's own form: lower node + translation = donor node.
+  int nConnections = 0;
+  ASSERT_EQ(cg_nconns(fn, 1, 1, &nConnections), CG_OK);
+  ASSERT_EQ(nConnections, 1);
+  CGNS_ENUMT(GridLocation_t) location;
+  CGNS_ENUMT(GridConnectivityType_t) connectionType;
+  CGNS_ENUMT(PointSetType_t) pointSet, donorSet;
+  CGNS_ENUMT(ZoneType_t) donorZoneType;
+  CGNS_ENUMT(DataType_t) donorDataType;
+  cgsize_t nPoints = 0, nDonors = 0;
+  char donorName[33];
+  ASSERT_EQ(cg_conn_info(fn, 1, 1, 1, name, &location, &connectionType, &pointSet, &nPoints, donorName,
+                         &donorZoneType, &donorSet, &donorDataType, &nDonors), CG_OK);
+  EXPECT_EQ(std::string(donorName), "passage");
+  EXPECT_EQ(connectionType, CGNS_ENUMV(Abutting1to1));
+  ASSERT_EQ(nPoints, nDonors);
+  EXPECT_EQ(static_cast<std::size_t>(nPoints), p.patches[3].edges.size() + 1);
+  std::vector<cgsize_t> points(static_cast<std::size_t>(nPoints)), donors(static_cast<std::size_t>(nDonors));
+  ASSERT_EQ(cg_conn_read(fn, 1, 1, 1, points.data(), CGNS_ENUMV(Integer), donors.data()), CG_OK);
+  float centre[2], angle[2], shift[2];
+  ASSERT_EQ(cg_conn_periodic_read(fn, 1, 1, 1, centre, angle, shift), CG_OK);
+  EXPECT_FLOAT_EQ(shift[0], static_cast<float>(p.translation.x()));
+  EXPECT_FLOAT_EQ(shift[1], static_cast<float>(p.translation.y()));
+  EXPECT_NE(p.translation.y(), 0.0);
+  for (std::size_t k = 0; k < points.size(); ++k)
+    EXPECT_LT((p.points[static_cast<std::size_t>(points[k] - 1)] + p.translation -
+               p.points[static_cast<std::size_t>(donors[k] - 1)]).norm(), 1e-12) << k;
   cg_close(fn);
   const std::string config = su2ConfigFragment(p, "su2.cgns");
   std::ostringstream translation;

@@ -2,6 +2,7 @@
 
 #include <cgnslib.h>
 
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -35,6 +36,57 @@ class OpenCgns {
   std::string label_;
   int fn_ = -1;
 };
+
+// The periodic pair as the CGNS standard describes it (SU2 itself reads the config): a
+// 1-to-1 abutting connection from the periodicLower nodes to the periodicUpper nodes of
+// the same zone, with the translation lower -> upper as its periodic property.
+void writePeriodicConnection(const OpenCgns& f, int base, int zone, const UnstructuredPassage& passage) {
+  const EdgePatch* lower = nullptr;
+  const EdgePatch* upper = nullptr;
+  for (const EdgePatch& p : passage.patches) {
+    if (p.kind == EdgePatchKind::periodicLower) lower = &p;
+    if (p.kind == EdgePatchKind::periodicUpper) upper = &p;
+  }
+  if (!lower || !upper || lower->edges.size() != upper->edges.size()) return;
+  std::vector<cgsize_t> points, donors;
+  std::set<int> seen;
+  const auto pair = [&](int p, int d) {
+    if (seen.insert(p).second) {
+      points.push_back(p + 1);
+      donors.push_back(d + 1);
+    }
+  };
+  // Edge k of the upper patch is edge k of the lower one translated, perhaps the other
+  // way round: each lower node goes with the upper end point nearer its image.
+  for (std::size_t k = 0; k < lower->edges.size(); ++k) {
+    const MeshEdge& l = lower->edges[k];
+    const MeshEdge& u = upper->edges[k];
+    const Eigen::Vector2d image = passage.points[static_cast<std::size_t>(l.p0)] + passage.translation;
+    const bool same = (passage.points[static_cast<std::size_t>(u.p0)] - image).norm() <=
+                      (passage.points[static_cast<std::size_t>(u.p1)] - image).norm();
+    pair(l.p0, same ? u.p0 : u.p1);
+    pair(l.p1, same ? u.p1 : u.p0);
+  }
+  int connection = 0;
+  f.call(cg_conn_write(f.fn(), base, zone, "periodic", CGNS_ENUMV(Vertex), CGNS_ENUMV(Abutting1to1),
+                       CGNS_ENUMV(PointList), static_cast<cgsize_t>(points.size()), points.data(), "passage",
+                       CGNS_ENUMV(Unstructured), CGNS_ENUMV(PointListDonor), CGNS_ENUMV(Integer),
+                       static_cast<cgsize_t>(donors.size()), donors.data(), &connection),
+         "periodic connection");
+  const float centre[2] = {0, 0}, angle[2] = {0, 0};
+  const float translation[2] = {static_cast<float>(passage.translation.x()),
+                                static_cast<float>(passage.translation.y())};
+  f.call(cg_conn_periodic_write(f.fn(), base, zone, connection, centre, angle, translation),
+         "periodic translation");
+  // Units of RotationCenter, RotationAngle, Translation: metre, degree, metre.
+  const double exponents[3][5] = {{0, 1, 0, 0, 0}, {0, 0, 0, 0, 1}, {0, 1, 0, 0, 0}};
+  for (int k = 0; k < 3; ++k) {
+    f.call(cg_goto(f.fn(), base, "Zone_t", zone, "ZoneGridConnectivity_t", 1, "GridConnectivity_t", connection,
+                   "GridConnectivityProperty_t", 1, "Periodic_t", 1, "DataArray_t", k + 1, "end"),
+           "goto periodic data");
+    f.call(cg_exponents_write(CGNS_ENUMV(RealDouble), exponents[k]), "periodic exponents");
+  }
+}
 
 }  // namespace
 
@@ -75,6 +127,7 @@ void writeSu2Cgns(const UnstructuredPassage& passage, const std::filesystem::pat
     f.call(cg_section_write(f.fn(), base, zone, p.name.c_str(), CGNS_ENUMV(BAR_2), first, last, 0, bars.data(),
                             &section), "section " + p.name);
   }
+  writePeriodicConnection(f, base, zone, passage);
   f.close();
 }
 

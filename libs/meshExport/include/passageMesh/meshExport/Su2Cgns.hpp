@@ -7,7 +7,10 @@
 // by the patch (blade, inlet, outlet, periodicLower, periodicUpper: SU2's marker names),
 // element numbers running on from the cells. SU2 takes the periodic pairing from its
 // config, not from the CGNS file: the fragment holds MARKER_PERIODIC with the
-// translation lower -> upper.
+// translation lower -> upper. For other readers the zone also holds the pair in CGNS's
+// own form: a connection "periodic" (Abutting1to1, vertex PointList of periodicLower to
+// PointListDonor of periodicUpper in the same zone) whose periodic property is that
+// translation (float32, as CGNS stores it).
 #include <filesystem>
 #include <string>
 
