@@ -201,7 +201,7 @@ MultigridReport solveThompsonMultigrid(StructuredBlock& o, GridControl& control,
         }
         multigrid.cycle();
       },
-      [&] { return thompsonResidual(o, control, options.rows); });
+      [&] { return thompsonResidual(o, control, options.rows); }, options.stallCycles);
   report.cycles = r.sweeps;
   report.residual = r.residual;
   report.converged = r.converged;

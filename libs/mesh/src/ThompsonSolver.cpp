@@ -274,8 +274,9 @@ ThompsonReport solveThompson(StructuredBlock& o, GridControl& control,
 
 ThompsonReport iterateUntilConverged(int maxIterations, double tolerance,
                                      const std::function<void()>& iteration,
-                                     const std::function<double()>& residual) {
+                                     const std::function<double()>& residual, int stallWindow) {
   ThompsonReport report;
+  std::vector<double> history;
   for (int k = 1; k <= maxIterations; ++k) {
     iteration();
     report.sweeps = k;
@@ -285,6 +286,10 @@ ThompsonReport iterateUntilConverged(int maxIterations, double tolerance,
       report.converged = true;
       break;
     }
+    history.push_back(report.residual);
+    if (stallWindow > 0 && k > stallWindow &&
+        report.residual > 0.5 * history[static_cast<std::size_t>(k - 1 - stallWindow)])
+      break;
   }
   return report;
 }

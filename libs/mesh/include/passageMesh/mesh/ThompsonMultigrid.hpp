@@ -24,6 +24,10 @@ struct MultigridOptions {
   MovingRows rows;
   int coarsestLoop = 16;     // coarsen i only while the coarse loop keeps this many nodes
   int coarsestMovingRows = 4;  // coarsen j only while this many moving rows remain
+  // Stop when the residual has not halved over this many cycles (0: never). A working
+  // V-cycle gains a factor 2 or more per cycle; a stalled one (a folding grid) would
+  // otherwise run all maxCycles (docs/elliptic-smoothing.md).
+  int stallCycles = 10;
 };
 
 struct MultigridReport {

@@ -64,11 +64,13 @@ struct ThompsonReport {
 // wall-layer values of EllipticSmoother) or leave them.
 using ControlUpdate = std::function<void(const StructuredBlock&, GridControl&)>;
 
-// Runs `iteration` until `residual()` is at most `tolerance` (converged), is not finite, or
-// `maxIterations` have run; the loop shared by the single-grid and multigrid solvers.
+// Runs `iteration` until `residual()` is at most `tolerance` (converged), is not finite,
+// `maxIterations` have run, or (stallWindow > 0) the residual has not halved over the last
+// stallWindow iterations: a stalled solve, which does not converge by going on. The loop
+// shared by the single-grid and multigrid solvers.
 ThompsonReport iterateUntilConverged(int maxIterations, double tolerance,
                                      const std::function<void()>& iteration,
-                                     const std::function<double()>& residual);
+                                     const std::function<double()>& residual, int stallWindow = 0);
 
 ThompsonReport solveThompson(StructuredBlock& oBlock, GridControl& control,
                              const ThompsonOptions& options = {},
