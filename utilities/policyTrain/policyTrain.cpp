@@ -88,6 +88,15 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
               static_cast<unsigned long long>(options.seed), rollouts.description().c_str());
   std::fflush(stdout);
 
+  // The baseline the policy must beat: the defaults' action on the validation passages.
+  std::optional<double> baseline;
+  if (options.validationPassages > 0 && !environment.defaultAction().empty()) {
+    const ValidationRecord d = trainer.validateAction(environment.defaultAction());
+    baseline = d.meanReward;
+    std::printf("policyTrain: the defaults on the %d validation passages: mean reward %.17g, median %.17g, "
+                "%d valid\n", d.passages, d.meanReward, d.medianReward, d.valid);
+    std::fflush(stdout);
+  }
   std::vector<std::string> warnings;
   TrainingProgress progress(trainer.episode());
   PolicyTrainer::Events events;
@@ -97,7 +106,7 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
   };
   events.checkpointDue = [&](const PolicyTrainer& t) {
     t.saveCheckpoint(paths.checkpoint);
-    writeLearningCurves(paths, t, &warnings);
+    writeLearningCurves(paths, t, &warnings, baseline);
   };
   const bool done = trainer.run(&installInterruptFlag(), events);
   trainer.saveCheckpoint(paths.checkpoint);
@@ -105,7 +114,7 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
                    PolicyProvenance{trainer.episode(),
                                     trainer.validationCurve().empty() ? 0.0 : trainer.validationCurve().back().meanReward,
                                     command});
-  const auto written = writeLearningCurves(paths, trainer, &warnings);
+  const auto written = writeLearningCurves(paths, trainer, &warnings, baseline);
   progress(trainer, true);
   for (const auto& w : warnings) std::cerr << "policyTrain: warning: " << w << "\n";
   if (!trainer.validationCurve().empty()) {

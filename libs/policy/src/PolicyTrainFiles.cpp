@@ -25,7 +25,7 @@ std::string line(const char* format, auto... values) {
   return text;
 }
 
-void plotCurves(const PolicyTrainPaths& paths) {
+void plotCurves(const PolicyTrainPaths& paths, std::optional<double> reference) {
   GnuplotRun plot;
   const std::string learning = gnuplotQuoted(paths.learningCsv.string());
   const std::string validation = gnuplotQuoted(paths.validationCsv.string());
@@ -38,13 +38,17 @@ void plotCurves(const PolicyTrainPaths& paths) {
            "plot " + learning + " every ::1 using 1:2 with lines lw 2 title 'training: mean reward (with noise)', " +
            learning + " every ::1 using 1:3 with lines dt 2 title 'training: share of valid meshes', " +
            validation + " every ::1 using 1:2 with linespoints pt 7 title 'validation: mean reward (noise-free)', " +
-           validation + " every ::1 using 1:3 with linespoints pt 5 title 'validation: median reward'\n");
+           validation + " every ::1 using 1:3 with linespoints pt 5 title 'validation: median reward'" +
+           (reference ? line(", %.17g with lines dt 3 lw 2 lc 'black' title 'validation: mean reward of the defaults'",
+                             *reference)
+                      : std::string()) +
+           "\n");
 }
 
 }  // namespace
 
 std::vector<fs::path> writeLearningCurves(const PolicyTrainPaths& paths, const PolicyTrainer& trainer,
-                                          std::vector<std::string>* warnings) {
+                                          std::vector<std::string>* warnings, std::optional<double> reference) {
   std::string learning = "episode,meanReward,validFraction,criticLoss,sigma,seconds\n";
   for (const LearningRecord& r : trainer.learningCurve())
     learning += line("%ld,%.17g,%.17g,%.17g,%.17g,%.6f\n", r.episode, r.meanReward, r.validFraction,
@@ -57,7 +61,7 @@ std::vector<fs::path> writeLearningCurves(const PolicyTrainPaths& paths, const P
   std::vector<fs::path> written{paths.learningCsv, paths.validationCsv};
   if (trainer.learningCurve().empty()) return written;
   try {
-    plotCurves(paths);
+    plotCurves(paths, reference);
     written.push_back(paths.learningPng);
   } catch (const std::exception& e) {
     if (warnings) warnings->push_back(std::string("no learning picture: ") + e.what());

@@ -30,6 +30,23 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// The validation summary of one set of rewards.
+ValidationRecord validationRecord(long episode, const std::vector<double>& rewards) {
+  const int n = static_cast<int>(rewards.size());
+  ValidationRecord record;
+  record.episode = episode;
+  record.passages = n;
+  double sum = 0;
+  for (double r : rewards) {
+    sum += r;
+    record.valid += r > -1.0;
+  }
+  record.meanReward = n ? sum / n : 0.0;
+  record.medianReward = median(rewards);
+  return record;
+}
+
+
 // Rows of doubles as one tensor and back (learning curves, counters).
 template <typename Row, typename ToArray>
 torch::Tensor tableTensor(const std::vector<Row>& rows, int columns, ToArray toArray) {
@@ -138,6 +155,14 @@ void PolicyTrainer::runBatch() {
   }
 }
 
+ValidationRecord PolicyTrainer::validateAction(const std::vector<double>& action) const {
+  const int n = static_cast<int>(validationTasks_.size());
+  PolicyBatch actions(n, environment_.actionSize());
+  for (int i = 0; i < n; ++i)
+    actions.row(i) = Eigen::Map<const Eigen::RowVectorXd>(action.data(), environment_.actionSize());
+  return validationRecord(0, rollouts_.rewards(validationTasks_, actions, options_.validationSeed, 0));
+}
+
 void PolicyTrainer::validate() {
   if (validationTasks_.empty()) return;
   const int n = static_cast<int>(validationTasks_.size());
@@ -145,20 +170,10 @@ void PolicyTrainer::validate() {
   for (int i = 0; i < n; ++i)
     states.row(i) = Eigen::Map<const Eigen::RowVectorXd>(validationTasks_[static_cast<std::size_t>(i)].state.data(),
                                                          environment_.stateSize());
-  const std::vector<double> rewards =
-      rollouts_.rewards(validationTasks_, learner_.act(states), options_.validationSeed, 0);
-  ValidationRecord record;
-  record.episode = episode_;
-  record.passages = n;
-  double sum = 0;
-  for (double r : rewards) {
-    sum += r;
-    record.valid += r > -1.0;
-  }
-  record.meanReward = sum / n;
-  record.medianReward = median(rewards);
-  validation_.push_back(record);
+  validation_.push_back(validationRecord(
+      episode_, rollouts_.rewards(validationTasks_, learner_.act(states), options_.validationSeed, 0)));
 }
+
 
 bool PolicyTrainer::run(const std::atomic<bool>* stop, const Events& events) {
   start_ = std::chrono::steady_clock::now();

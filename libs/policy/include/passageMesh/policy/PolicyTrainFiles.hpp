@@ -10,6 +10,7 @@
 // All written atomically; the CSVs are rewritten whole from the trainer's records, so a
 // resumed run's files hold the whole history.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,9 +24,12 @@ struct PolicyTrainPaths {
 };
 
 // Writes both CSVs and the picture; returns the files written. A missing gnuplot is a
-// warning in `warnings`, not an error (the CSVs are what matters).
+// warning in `warnings`, not an error (the CSVs are what matters). `reference`, when
+// given, is drawn as a level line: the validation score of the environment's default
+// action, the baseline the policy must beat.
 std::vector<std::filesystem::path> writeLearningCurves(const PolicyTrainPaths& paths,
                                                        const PolicyTrainer& trainer,
-                                                       std::vector<std::string>* warnings);
+                                                       std::vector<std::string>* warnings,
+                                                       std::optional<double> reference = {});
 
 }  // namespace passageMesh

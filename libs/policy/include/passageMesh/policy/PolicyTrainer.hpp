@@ -70,6 +70,9 @@ class PolicyTrainer {
   const ReplayBuffer& buffer() const { return buffer_; }
   const std::vector<LearningRecord>& learningCurve() const { return learning_; }
   const std::vector<ValidationRecord>& validationCurve() const { return validation_; }
+  // The validation of a fixed action for every passage (the environment's default action:
+  // the baseline); nothing of the trainer's state changes.
+  ValidationRecord validateAction(const std::vector<double>& action) const;
   // Best validation mean reward so far (-infinity before the first).
   double bestValidation() const { return bestValidation_; }
   double secondsTrained() const;  // this run's time plus that of the runs before a resume
