@@ -46,4 +46,7 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
   EXPECT_NE(bad("<hiddenLayers>512 x</hiddenLayers>").find("hiddenLayers"), std::string::npos);
   EXPECT_NE(bad("<actorLearningRate>-1</actorLearningRate>").find("positive"), std::string::npos);
   EXPECT_NE(bad("<epsiodes>10</epsiodes>").find("epsiodes"), std::string::npos);
+  EXPECT_NE(bad("<batchEpisodes>3000000000</batchEpisodes>").find("must be in [1, 2147483647]"), std::string::npos);
+  EXPECT_NE(bad("<minibatch>200</minibatch><bufferCapacity>100</bufferCapacity>").find("never start"),
+            std::string::npos);
 }

@@ -92,6 +92,20 @@ TEST(PolicyTrainer, ACheckpointOfAnotherRunOrACorruptFileIsRefusedWithItsName) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("seed 11"), std::string::npos) << e.what();
   }
+  PolicyTrainOptions otherNoise = smallRun(64);
+  otherNoise.noiseAmplitude = 0.2;
+  PolicyTrainer noisier(otherNoise, toy, rollouts);
+  try {
+    noisier.resume(dir / "good.pt");
+    FAIL() << "a checkpoint of other settings was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("<noiseAmplitude> was 0.25, is 0.20000000000000001"), std::string::npos)
+        << e.what();
+  }
+  PolicyTrainOptions longer = smallRun(640);  // more episodes or other threads: the same run
+  longer.threads = 2;
+  PolicyTrainer(longer, toy, rollouts).resume(dir / "good.pt");
+
   PolicyTrainOptions otherLayout = smallRun(64);
   otherLayout.hidden = {16, 8};
   PolicyTrainer wider(otherLayout, toy, rollouts);

@@ -11,6 +11,7 @@
 // rollouts over the ranks. Exit codes: 0 done, 1 bad input, 130 interrupted by Ctrl-C
 // (a checkpoint was written: run again with -resume).
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -75,6 +76,7 @@ class TrainingProgress {
 int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& rollouts,
           const PolicyEnvironment& environment, const PolicyTrainOptions& options) {
   const PolicyTrainPaths paths(cli.caseDir());
+  const std::atomic<bool>& stop = installInterruptFlag();  // before anything slow
   PolicyTrainer trainer(options, environment, rollouts);
   if (cli.values().count("resume")) {
     trainer.resume(paths.checkpoint);
@@ -108,7 +110,7 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
     t.saveCheckpoint(paths.checkpoint);
     writeLearningCurves(paths, t, &warnings, baseline);
   };
-  const bool done = trainer.run(&installInterruptFlag(), events);
+  const bool done = trainer.run(&stop, events);
   trainer.saveCheckpoint(paths.checkpoint);
   writePolicyFiles(paths.finalPolicy, trainer.learner(),
                    PolicyProvenance{trainer.episode(),
@@ -140,6 +142,13 @@ int main(int argc, char* argv[]) {
   bool parallel = false;
   for (int i = 1; i < argc; ++i)
     parallel = parallel || std::string(argv[i]) == "-parallel" || std::string(argv[i]) == "--parallel";
+  // Several copies under mpirun without -parallel would each train on the same files.
+  const char* ranks = std::getenv("OMPI_COMM_WORLD_SIZE");
+  if (!parallel && ranks && std::atoi(ranks) > 1) {
+    std::fprintf(stderr, "policyTrain: error: started as %s MPI ranks without -parallel; add -parallel "
+                 "(or run one process)\n", ranks);
+    return 1;
+  }
   std::optional<MpiSession> mpi;
   if (parallel) mpi.emplace(argc, argv);
   const bool worker = mpi && mpi->rank() != 0;

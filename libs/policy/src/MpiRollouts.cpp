@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <array>
+#include <cstdio>
 #include <thread>
 
 namespace passageMesh {
@@ -28,7 +29,14 @@ std::vector<double> evaluateBatch(const MpiSession& session, const PolicyEnviron
       tasks[static_cast<std::size_t>(i)] = environment.draw(h[1], h[2] + static_cast<std::uint64_t>(i));
   }
   std::vector<double> mine, all(static_cast<std::size_t>(count), 0.0);
-  rewardsOfSlice(tasks, actions, session.rank(), session.size(), threads, mine);
+  try {
+    rewardsOfSlice(tasks, actions, session.rank(), session.size(), threads, mine);
+  } catch (const std::exception& e) {
+    // The other ranks wait in the collective below: end them all rather than hang.
+    std::fprintf(stderr, "policyTrain: error: rank %d: %s\n", session.rank(), e.what());
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  }
   MPI_Reduce(mine.data(), all.data(), count, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
   return all;
 }
@@ -36,7 +44,9 @@ std::vector<double> evaluateBatch(const MpiSession& session, const PolicyEnviron
 }  // namespace
 
 MpiSession::MpiSession(int& argc, char**& argv) {
-  MPI_Init(&argc, &argv);
+  // Only the main thread calls MPI; rollouts run on other threads meanwhile.
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
 }

@@ -154,8 +154,9 @@ Policy Policy::load(const std::filesystem::path& xmlFile) {
     a.network->load(archive);
     const auto loaded = a.network->parameters();
     bool same = loaded.size() == shapes.size();
-    for (std::size_t k = 0; same && k < shapes.size(); ++k) same = loaded[k].sizes().vec() == shapes[k];
-    if (!same) throw std::runtime_error("its weight shapes differ");
+    for (std::size_t k = 0; same && k < shapes.size(); ++k)
+      same = loaded[k].sizes().vec() == shapes[k] && loaded[k].scalar_type() == torch::kFloat32;
+    if (!same) throw std::runtime_error("its weight shapes or types differ");
   } catch (const std::exception& e) {
     std::string what = e.what();
     what = what.substr(0, what.find('\n'));

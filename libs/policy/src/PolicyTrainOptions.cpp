@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -39,9 +40,13 @@ std::function<void(const Dictionary&, PolicyTrainOptions&)> readInteger(const ch
                                                                         long minimum) {
   return [=](const Dictionary& d, PolicyTrainOptions& o) {
     const long v = d.integer(name);
-    if (v < minimum)
-      throw InputError(d.source(), d.line(name), "<" + std::string(name) + "> must be at least " +
-                                                     std::to_string(minimum) + ", not " + std::to_string(v));
+    // int members stay below 2^31 (a larger value would wrap); long ones are bounded by the reader.
+    const long maximum = sizeof(T) < sizeof(long) ? static_cast<long>(std::numeric_limits<int>::max())
+                                                  : std::numeric_limits<long>::max();
+    if (v < minimum || v > maximum)
+      throw InputError(d.source(), d.line(name), "<" + std::string(name) + "> must be in [" +
+                                                     std::to_string(minimum) + ", " + std::to_string(maximum) +
+                                                     "], not " + std::to_string(v));
     o.*member = static_cast<T>(v);
   };
 }
@@ -139,7 +144,21 @@ PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file) {
   const Dictionary dict = Dictionary::read(file, "policyTrainDict", keyNames());
   for (const Key& k : keys())
     if (dict.has(k.name)) k.read(dict, options);
+  if (options.minibatch > options.bufferCapacity)
+    throw InputError(file.string(), dict.line(dict.has("minibatch") ? "minibatch" : "bufferCapacity"),
+                     "<minibatch> " + std::to_string(options.minibatch) + " is larger than <bufferCapacity> " +
+                         std::to_string(options.bufferCapacity) + ": the learner would never start");
   return options;
+}
+
+std::vector<std::pair<std::string, std::string>> trajectorySettings(const PolicyTrainOptions& options) {
+  std::vector<std::pair<std::string, std::string>> settings;
+  for (const Key& k : keys()) {
+    const std::string name = k.name;
+    if (name != "episodes" && name != "threads" && name != "checkpointEvery" && name != "logEvery")
+      settings.emplace_back(name, k.write(options));
+  }
+  return settings;
 }
 
 std::string policyTrainDictXml(const PolicyTrainOptions& options) {

@@ -30,6 +30,24 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// The settings that decide the weights, one "key value" line each.
+std::string settingsText(const PolicyTrainOptions& options) {
+  std::string text;
+  for (const auto& [key, value] : trajectorySettings(options)) text += key + " " + value + "\n";
+  return text;
+}
+
+// "<key> was X, is Y" for the first line that differs; empty when none does.
+std::string firstDifference(const std::string& before, const std::string& now) {
+  std::istringstream a(before), b(now);
+  for (std::string x, y; std::getline(a, x) && std::getline(b, y);)
+    if (x != y) {
+      const std::string key = x.substr(0, x.find(' '));
+      return "<" + key + "> was " + x.substr(x.find(' ') + 1) + ", is " + y.substr(y.find(' ') + 1);
+    }
+  return before == now ? "" : "a setting was added or removed";
+}
+
 // The validation summary of one set of rewards.
 ValidationRecord validationRecord(long episode, const std::vector<double>& rewards) {
   const int n = static_cast<int>(rewards.size());
@@ -203,6 +221,7 @@ void PolicyTrainer::saveCheckpoint(const std::filesystem::path& file) const {
   archive.write("format", c10::IValue(std::string(checkpointFormat)));
   archive.write("layout", c10::IValue(layoutText(learner_.layout())));
   archive.write("seed", c10::IValue(std::to_string(options_.seed)));
+  archive.write("settings", c10::IValue(settingsText(options_)));
   std::ostringstream rng;
   rng << minibatchRandom_;
   archive.write("minibatchRandom", c10::IValue(rng.str()));
@@ -232,6 +251,7 @@ void PolicyTrainer::saveCheckpoint(const std::filesystem::path& file) const {
 void PolicyTrainer::resume(const std::filesystem::path& file) {
   const std::string name = file.string();
   if (!std::filesystem::exists(file)) throw InputError(name, 0, "no checkpoint to resume from");
+  const auto corrupt = [&](const std::string& what) { return InputError(name, 0, "corrupt checkpoint: " + what); };
   try {
     torch::serialize::InputArchive archive;
     archive.load_from(name);
@@ -248,36 +268,66 @@ void PolicyTrainer::resume(const std::filesystem::path& file) {
     if (value.toStringRef() != std::to_string(options_.seed))
       throw InputError(name, 0, "the checkpoint was written with seed " + value.toStringRef() +
                                     ", this run has seed " + std::to_string(options_.seed));
+    // Checkpoints before the settings were recorded have none to compare.
+    if (archive.try_read("settings", value)) {
+      const std::string difference = firstDifference(value.toStringRef(), settingsText(options_));
+      if (!difference.empty())
+        throw InputError(name, 0, "the checkpoint's run had other settings (" + difference +
+                                      "): resume with its policyTrainDict, or start afresh");
+    }
+
+    // Everything is read into locals first, so a failure leaves the trainer as it was.
     archive.read("minibatchRandom", value);
-    std::istringstream rng(value.toStringRef());
-    rng >> minibatchRandom_;
-    torch::Tensor t;
-    archive.read("counters", t);
-    const auto c = t.accessor<double, 1>();
+    std::istringstream rngText(value.toStringRef());
+    std::mt19937_64 rng;
+    rngText >> rng;
+    if (!rngText) throw corrupt("the random generator's state does not parse");
+    torch::Tensor counters, s, a, r, learning, validation;
+    archive.read("counters", counters);
+    archive.read("bufferStates", s);
+    archive.read("bufferActions", a);
+    archive.read("bufferRewards", r);
+    archive.read("learning", learning);
+    archive.read("validation", validation);
+    const auto table = [&](const torch::Tensor& t, long columns, const std::string& what) {
+      if (t.scalar_type() != torch::kFloat64 || t.dim() != 2 || t.size(1) != columns)
+        throw corrupt(what + " has the wrong shape or type");
+    };
+    if (counters.scalar_type() != torch::kFloat64 || counters.dim() != 1 || counters.size(0) != 5)
+      throw corrupt("the counters have the wrong shape or type");
+    table(s, learner_.layout().stateSize, "the buffer's states");
+    table(a, learner_.layout().actionSize, "the buffer's actions");
+    table(r, 1, "the buffer's rewards");
+    table(learning, 6, "the learning curve");
+    table(validation, 5, "the validation curve");
+    if (a.size(0) != s.size(0) || r.size(0) != s.size(0) || s.size(0) > options_.bufferCapacity)
+      throw corrupt("the buffer holds " + std::to_string(s.size(0)) + " episodes, more than <bufferCapacity> or "
+                    "unequal parts");
+    ReplayBuffer buffer(learner_.layout().stateSize, learner_.layout().actionSize, options_.bufferCapacity);
+    buffer.importEpisodes(batchFromTensor(s), batchFromTensor(a), batchFromTensor(r).col(0));
+    std::vector<LearningRecord> learningRecords;
+    const auto l = learning.accessor<double, 2>();
+    for (long i = 0; i < learning.size(0); ++i)
+      learningRecords.push_back(LearningRecord{static_cast<long>(l[i][0]), l[i][1], l[i][2], l[i][3], l[i][4], l[i][5]});
+    std::vector<ValidationRecord> validationRecords;
+    const auto v = validation.accessor<double, 2>();
+    for (long i = 0; i < validation.size(0); ++i)
+      validationRecords.push_back(ValidationRecord{static_cast<long>(v[i][0]), v[i][1], v[i][2],
+                                                   static_cast<int>(v[i][3]), static_cast<int>(v[i][4])});
+    torch::serialize::InputArchive networks;
+    archive.read("networks", networks);
+    learner_.load(networks);  // last: it can fail too, and then the run ends anyway
+
+    const auto c = counters.accessor<double, 1>();
     episode_ = static_cast<long>(c[0]);
     bestValidation_ = c[1];
     lossSum_ = c[2];
     lossCount_ = static_cast<long>(c[3]);
     secondsBefore_ = c[4];
-    torch::Tensor s, a, r;
-    archive.read("bufferStates", s);
-    archive.read("bufferActions", a);
-    archive.read("bufferRewards", r);
-    buffer_.importEpisodes(batchFromTensor(s), batchFromTensor(a), batchFromTensor(r).col(0));
-    archive.read("learning", t);
-    learning_.clear();
-    const auto l = t.accessor<double, 2>();
-    for (long i = 0; i < t.size(0); ++i)
-      learning_.push_back(LearningRecord{static_cast<long>(l[i][0]), l[i][1], l[i][2], l[i][3], l[i][4], l[i][5]});
-    archive.read("validation", t);
-    validation_.clear();
-    const auto v = t.accessor<double, 2>();
-    for (long i = 0; i < t.size(0); ++i)
-      validation_.push_back(ValidationRecord{static_cast<long>(v[i][0]), v[i][1], v[i][2],
-                                             static_cast<int>(v[i][3]), static_cast<int>(v[i][4])});
-    torch::serialize::InputArchive networks;
-    archive.read("networks", networks);
-    learner_.load(networks);
+    minibatchRandom_ = rng;
+    buffer_ = std::move(buffer);
+    learning_ = std::move(learningRecords);
+    validation_ = std::move(validationRecords);
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "passageMesh/policy/ActorCritic.hpp"
 #include "passageMesh/policy/NetworkLayout.hpp"
@@ -50,5 +52,8 @@ struct PolicyTrainOptions {
 PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file);
 // The dictionary's text with every key (17 significant digits).
 std::string policyTrainDictXml(const PolicyTrainOptions& options);
+// "key value" lines of the settings that decide the weights (all but episodes, threads,
+// checkpointEvery and logEvery), for checking that a resumed run continues the same one.
+std::vector<std::pair<std::string, std::string>> trajectorySettings(const PolicyTrainOptions& options);
 
 }  // namespace passageMesh
