@@ -5,13 +5,16 @@
 // validation set is stream 20261202, episodes 0..49). With BUDGET > 0, CMA-ES
 // (iterOptimize's default method) searches each passage's meshing parameters from the
 // defaults with that many meshes; the ratio is one-shot Q / that best. Prints a summary
-// and writes one row per passage to OUT.csv (default: stdout only).
+// and writes one row per passage to OUT.csv and, with BUDGET, the ratios' histogram to
+// OUT.png (gnuplot).
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "passageMesh/core/AtomicFile.hpp"
+#include "passageMesh/core/GnuplotRun.hpp"
 #include "passageMesh/core/ParallelFor.hpp"
 #include "passageMesh/optimize/Optimizer.hpp"
 #include "passageMesh/policy/Policy.hpp"
@@ -96,6 +99,23 @@ int main(int argc, char* argv[]) {
                 "one-shot / best: median %.4f, worst %.4f (an invalid one-shot mesh counts 0); %d both valid\n",
                 budget, ratios.size(), median(ratios),
                 ratios.empty() ? 0.0 : *std::min_element(ratios.begin(), ratios.end()), bothValid);
-  if (argc > 5) std::ofstream(argv[5]) << csv;
+  if (argc > 5) {
+    const std::filesystem::path out = argv[5];
+    writeFileAtomically(out, csv);
+    if (budget > 0) {
+      GnuplotRun plot;
+      std::filesystem::path png = out;
+      png.replace_extension(".png");
+      plot.run(gnuplotPngTerminal(900, 550) + plot.output(png) +
+               "set datafile separator ','\nset grid\nset style fill solid 0.6\n"
+               "set xlabel 'one-shot Q / best Q of CMA-ES (" + std::to_string(budget) +
+               " meshes); invalid one-shot mesh = 0'\nset ylabel 'passages'\n"
+               "set title '" + which + ": " + std::to_string(ratios.size()) +
+               " sampler passages with a valid best mesh'\nset xrange [-0.025:1.075]\nset boxwidth 0.045\n"
+               "bin(x) = 0.05 * floor(x / 0.05 + 0.5)\n"
+               "plot " + gnuplotQuoted(out.string()) +
+               " every ::1 using (bin($4)):(1.0) smooth frequency with boxes notitle\n");
+    }
+  }
   return 0;
 }
