@@ -2,11 +2,13 @@
 # Runs every tutorial (blade points -> checked mesh) on a copy in a temporary folder and
 # requires `cgnscheck mesh/passage.cgns` to print no warning and no error (issue 3), and
 # where OpenFOAM is installed checkMesh "Mesh OK." on the exported polyMesh and the Plot3D
-# export read by plot3dToFoam to the same cell count (issue 13).
+# export read by plot3dToFoam to the same cell count (issue 13), and the shipped policy's
+# one-shot Q as recorded in etc/policy/tutorialOneShot.csv (issue 12).
 #   runTutorials.sh SOURCE_DIR BUILD_DIR
 set -euo pipefail
 source="$1"
 export PASSAGEMESH_BUILD="$2"
+export PATH="$PASSAGEMESH_BUILD/bin:$PATH"
 command -v cgnscheck > /dev/null || { echo "cgnscheck not installed (Debian: cgns-convert)"; exit 1; }
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
@@ -36,4 +38,7 @@ for blade in LS89 STD10 T106A SIRT; do
   if [ "$status" = 1 ]; then echo "$blade: the Plot3D file does not read back:"; cat "$work/plot3d.out"; exit 1; fi
   sed "s/^/$blade: /" "$work/plot3d.out"
   grep -m1 "Q = " "$work/tutorials/$blade/log.checkMeshQuality" | sed "s/^/$blade: /"
+  # The shipped policy still meshes the tutorial as recorded (issue 12).
+  "$source/tests/tutorials/checkShippedPolicy.sh" "$source" "$work/tutorials/$blade" "$blade" ||
+    { echo "$blade: the shipped policy's one-shot Q changed (retrain, or record the new value)"; exit 1; }
 done
