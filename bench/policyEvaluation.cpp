@@ -70,11 +70,10 @@ int main(int argc, char* argv[]) {
 
   std::string csv = "passage,oneShotQ,bestQ,ratio\n";
   std::vector<double> q, ratios;
-  int valid = 0, bothValid = 0;
+  int bothValid = 0;
   for (int i = 0; i < count; ++i) {
     const Row& r = rows[static_cast<std::size_t>(i)];
     q.push_back(r.oneShot);
-    valid += r.oneShot > -1;
     double ratio = -1;
     if (budget > 0 && r.best > 0) {
       ratio = r.oneShot > -1 ? r.oneShot / r.best : 0.0;
@@ -85,19 +84,13 @@ int main(int argc, char* argv[]) {
     std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g\n", i, r.oneShot, r.best, ratio);
     csv += line;
   }
-  const auto median = [](std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-  };
-  double mean = 0;
-  for (double v : q) mean += v;
+  const RewardSummary oneShot = summarizeRewards(q);
   std::printf("%s on %d passages of stream %llu: mean reward %.6f, median %.6f, %d valid\n", which.c_str(), count,
-              static_cast<unsigned long long>(seed), mean / count, median(q), valid);
+              static_cast<unsigned long long>(seed), oneShot.mean, oneShot.median, oneShot.valid);
   if (budget > 0)
     std::printf("  against CMA-ES with %ld meshes from the defaults: %zu passages with a valid best; ratio "
                 "one-shot / best: median %.4f, worst %.4f (an invalid one-shot mesh counts 0); %d both valid\n",
-                budget, ratios.size(), median(ratios),
+                budget, ratios.size(), summarizeRewards(ratios).median,
                 ratios.empty() ? 0.0 : *std::min_element(ratios.begin(), ratios.end()), bothValid);
   if (argc > 5) {
     const std::filesystem::path out = argv[5];

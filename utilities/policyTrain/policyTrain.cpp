@@ -51,17 +51,11 @@ class TrainingProgress {
     const long done = t.episode() - first_;
     const double rate = s > 0 ? done / s : 0.0;
     const double left = rate > 0 ? (t.options().episodes - t.episode()) / rate : 0.0;
-    const std::vector<double> recent = t.buffer().recentRewards(1000);
-    double sum = 0;
-    int valid = 0;
-    for (double r : recent) {
-      sum += r;
-      valid += r > -1.0;
-    }
-    const double n = std::max<double>(1.0, static_cast<double>(recent.size()));
-    std::fprintf(stderr, "policyTrain: %ld/%ld episodes, %.1f per s, mean reward of the last %zu %.5f "
+    const RewardSummary recent = summarizeRewards(t.buffer().recentRewards(1000));
+    const double n = std::max(1, recent.count);
+    std::fprintf(stderr, "policyTrain: %ld/%ld episodes, %.1f per s, mean reward of the last %d %.5f "
                  "(valid %.1f %%), best validation %s, %s left\n",
-                 t.episode(), t.options().episodes, rate, recent.size(), sum / n, 100.0 * valid / n,
+                 t.episode(), t.options().episodes, rate, recent.count, recent.mean, 100.0 * recent.valid / n,
                  std::isfinite(t.bestValidation()) ? std::to_string(t.bestValidation()).c_str() : "none yet",
                  formatDuration(left).c_str());
   }

@@ -87,16 +87,26 @@ const std::array<std::string, MeshingParameters::size>& MeshingParameters::names
   return n;
 }
 
-std::array<double, MeshingParameters::size> MeshingParameters::lowerBounds(double chord) {
-  std::array<double, size> v;
-  for (int k = 0; k < size; ++k) v[k] = table()[k].lower * (table()[k].length ? chord : 1.0);
+namespace {
+
+// One end of the range box (&MeshingParameterInfo::lower or ::upper), lengths in metres.
+std::array<double, MeshingParameters::size> rangeEnd(double chord, double MeshingParameterInfo::*end) {
+  std::array<double, MeshingParameters::size> v;
+  for (int k = 0; k < MeshingParameters::size; ++k) {
+    const MeshingParameterInfo& info = MeshingParameters::table()[k];
+    v[k] = info.*end * (info.length ? chord : 1.0);
+  }
   return v;
 }
 
+}  // namespace
+
+std::array<double, MeshingParameters::size> MeshingParameters::lowerBounds(double chord) {
+  return rangeEnd(chord, &MeshingParameterInfo::lower);
+}
+
 std::array<double, MeshingParameters::size> MeshingParameters::upperBounds(double chord) {
-  std::array<double, size> v;
-  for (int k = 0; k < size; ++k) v[k] = table()[k].upper * (table()[k].length ? chord : 1.0);
-  return v;
+  return rangeEnd(chord, &MeshingParameterInfo::upper);
 }
 
 MeshingParameters clipToRange(const MeshingParameters& p, double chord,

@@ -4,7 +4,8 @@
 
 #include <array>
 #include <cstdio>
-#include <thread>
+
+#include "passageMesh/core/ParallelFor.hpp"
 
 namespace passageMesh {
 
@@ -70,9 +71,8 @@ std::vector<double> MpiRollouts::rewards(const std::vector<EpisodeTask>& tasks, 
 }
 
 std::string MpiRollouts::description() const {
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  return std::to_string(session_.size()) + " MPI ranks x " +
-         std::to_string(threads_ > 0 ? threads_ : static_cast<int>(cores)) + " rollout threads";
+  return std::to_string(session_.size()) + " MPI ranks x " + std::to_string(resolvedThreads(threads_)) +
+         " rollout threads";
 }
 
 void serveRollouts(const MpiSession& session, const PolicyEnvironment& environment, int threads) {

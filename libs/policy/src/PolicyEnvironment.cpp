@@ -1,5 +1,6 @@
 #include "passageMesh/policy/PolicyEnvironment.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -16,6 +17,30 @@ std::mt19937_64 episodeRandom(std::uint64_t seed, std::uint64_t episode, std::ui
                          static_cast<std::uint32_t>(episode),
                          static_cast<std::uint32_t>(episode >> 32), stream};
   return std::mt19937_64(sequence);
+}
+
+PolicyBatch statesOf(const std::vector<EpisodeTask>& tasks, int stateSize) {
+  PolicyBatch states(static_cast<long>(tasks.size()), stateSize);
+  for (std::size_t i = 0; i < tasks.size(); ++i)
+    states.row(static_cast<long>(i)) = Eigen::Map<const Eigen::RowVectorXd>(tasks[i].state.data(), stateSize);
+  return states;
+}
+
+RewardSummary summarizeRewards(const std::vector<double>& rewards) {
+  RewardSummary s;
+  s.count = static_cast<int>(rewards.size());
+  if (rewards.empty()) return s;
+  double sum = 0;
+  for (double r : rewards) {
+    sum += r;
+    s.valid += r > -1.0;
+  }
+  s.mean = sum / s.count;
+  std::vector<double> sorted = rewards;
+  std::sort(sorted.begin(), sorted.end());
+  const std::size_t n = sorted.size();
+  s.median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+  return s;
 }
 
 double standardNormal(std::mt19937_64& rng) {

@@ -23,13 +23,6 @@ std::string layoutText(const NetworkLayout& l) {
   return s.str();
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 // The settings that decide the weights, one "key value" line each.
 std::string settingsText(const PolicyTrainOptions& options) {
   std::string text;
@@ -50,18 +43,8 @@ std::string firstDifference(const std::string& before, const std::string& now) {
 
 // The validation summary of one set of rewards.
 ValidationRecord validationRecord(long episode, const std::vector<double>& rewards) {
-  const int n = static_cast<int>(rewards.size());
-  ValidationRecord record;
-  record.episode = episode;
-  record.passages = n;
-  double sum = 0;
-  for (double r : rewards) {
-    sum += r;
-    record.valid += r > -1.0;
-  }
-  record.meanReward = n ? sum / n : 0.0;
-  record.medianReward = median(rewards);
-  return record;
+  const RewardSummary summary = summarizeRewards(rewards);
+  return ValidationRecord{episode, summary.mean, summary.median, summary.valid, summary.count};
 }
 
 
@@ -127,17 +110,11 @@ void PolicyTrainer::learnFrom(const std::vector<double>& state, const std::vecto
     }
   }
   if (episode_ % options_.logEvery == 0) {
-    const std::vector<double> recent = buffer_.recentRewards(options_.logEvery);
+    const RewardSummary recent = summarizeRewards(buffer_.recentRewards(options_.logEvery));
     LearningRecord record;
     record.episode = episode_;
-    double sum = 0;
-    int valid = 0;
-    for (double v : recent) {
-      sum += v;
-      valid += v > -1.0;
-    }
-    record.meanReward = recent.empty() ? 0.0 : sum / static_cast<double>(recent.size());
-    record.validFraction = recent.empty() ? 0.0 : static_cast<double>(valid) / static_cast<double>(recent.size());
+    record.meanReward = recent.mean;
+    record.validFraction = recent.count ? static_cast<double>(recent.valid) / recent.count : 0.0;
     record.criticLoss = lossCount_ ? lossSum_ / static_cast<double>(lossCount_) : 0.0;
     record.sigma = options_.noiseSigma(episode_ - 1);
     record.seconds = secondsTrained();
@@ -153,11 +130,7 @@ void PolicyTrainer::runBatch() {
   std::vector<EpisodeTask> tasks(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i)
     tasks[static_cast<std::size_t>(i)] = environment_.draw(options_.seed, static_cast<std::uint64_t>(first + i));
-  PolicyBatch states(count, environment_.stateSize());
-  for (int i = 0; i < count; ++i)
-    states.row(i) = Eigen::Map<const Eigen::RowVectorXd>(tasks[static_cast<std::size_t>(i)].state.data(),
-                                                         environment_.stateSize());
-  PolicyBatch actions = learner_.act(states);
+  PolicyBatch actions = learner_.act(statesOf(tasks, environment_.stateSize()));
   for (int i = 0; i < count; ++i) {
     std::mt19937_64 noise = episodeRandom(options_.seed, static_cast<std::uint64_t>(first + i), noiseStream);
     const double sigma = options_.noiseSigma(first + i);
@@ -183,13 +156,9 @@ ValidationRecord PolicyTrainer::validateAction(const std::vector<double>& action
 
 void PolicyTrainer::validate() {
   if (validationTasks_.empty()) return;
-  const int n = static_cast<int>(validationTasks_.size());
-  PolicyBatch states(n, environment_.stateSize());
-  for (int i = 0; i < n; ++i)
-    states.row(i) = Eigen::Map<const Eigen::RowVectorXd>(validationTasks_[static_cast<std::size_t>(i)].state.data(),
-                                                         environment_.stateSize());
-  validation_.push_back(validationRecord(
-      episode_, rollouts_.rewards(validationTasks_, learner_.act(states), options_.validationSeed, 0)));
+  const PolicyBatch actions = learner_.act(statesOf(validationTasks_, environment_.stateSize()));
+  validation_.push_back(
+      validationRecord(episode_, rollouts_.rewards(validationTasks_, actions, options_.validationSeed, 0)));
 }
 
 
@@ -200,7 +169,9 @@ bool PolicyTrainer::run(const std::atomic<bool>* stop, const Events& events) {
     const long before = episode_;
     runBatch();
     const bool done = episode_ >= options_.episodes;
-    if (done || episode_ / options_.validationEvery > before / options_.validationEvery) {
+    // Due at the end, and when the batch passed a multiple of `every`.
+    const auto due = [&](long every) { return done || episode_ / every > before / every; };
+    if (due(options_.validationEvery)) {
       validate();
       if (!validation_.empty() && validation_.back().episode == episode_ &&
           validation_.back().meanReward > bestValidation_) {
@@ -209,8 +180,7 @@ bool PolicyTrainer::run(const std::atomic<bool>* stop, const Events& events) {
       }
     }
     if (events.afterBatch) events.afterBatch(*this);
-    if ((done || episode_ / options_.checkpointEvery > before / options_.checkpointEvery) &&
-        events.checkpointDue)
+    if (due(options_.checkpointEvery) && events.checkpointDue)
       events.checkpointDue(*this);
   }
   return true;

@@ -1,7 +1,6 @@
 #include "passageMesh/policy/RolloutEvaluator.hpp"
 
 #include <string>
-#include <thread>
 
 #include "passageMesh/core/ParallelFor.hpp"
 
@@ -30,8 +29,7 @@ std::vector<double> ThreadRollouts::rewards(const std::vector<EpisodeTask>& task
 }
 
 std::string ThreadRollouts::description() const {
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  return std::to_string(threads_ > 0 ? threads_ : static_cast<int>(cores)) + " rollout threads";
+  return std::to_string(resolvedThreads(threads_)) + " rollout threads";
 }
 
 }  // namespace passageMesh

@@ -49,14 +49,13 @@ EpisodeTask ToyEnvironment::draw(std::uint64_t seed, std::uint64_t episode) cons
 }
 
 double ToyEnvironment::actionError(const ActorCritic& learner, std::uint64_t seed, int count) const {
-  PolicyBatch states(count, stateSize_);
+  std::vector<EpisodeTask> tasks;
   std::vector<std::vector<double>> optima;
   for (int i = 0; i < count; ++i) {
-    const EpisodeTask task = draw(seed, static_cast<std::uint64_t>(i));
-    states.row(i) = Eigen::Map<const Eigen::RowVectorXd>(task.state.data(), stateSize_);
-    optima.push_back(optimum(task.state));
+    tasks.push_back(draw(seed, static_cast<std::uint64_t>(i)));
+    optima.push_back(optimum(tasks.back().state));
   }
-  const PolicyBatch actions = learner.act(states);
+  const PolicyBatch actions = learner.act(statesOf(tasks, stateSize_));
   double sum = 0;
   for (int i = 0; i < count; ++i)
     for (int k = 0; k < actionSize_; ++k) {

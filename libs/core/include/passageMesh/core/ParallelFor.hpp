@@ -11,9 +11,14 @@
 
 namespace passageMesh {
 
+// The threads a `threads` setting means: itself when positive, else all cores (at least 1).
+inline int resolvedThreads(int threads) {
+  return threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 template <typename Body>
 void parallelFor(int count, int threads, const Body& body) {
-  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  threads = resolvedThreads(threads);
   threads = std::min(threads, count);
   if (threads <= 1) {
     for (int i = 0; i < count; ++i) body(i);

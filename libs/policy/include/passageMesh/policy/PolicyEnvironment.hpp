@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "passageMesh/blade/BladeSampler.hpp"
+#include "passageMesh/policy/ReplayBuffer.hpp"
 
 namespace passageMesh {
 
@@ -29,6 +30,17 @@ class PolicyEnvironment {
   // there); empty otherwise.
   virtual std::vector<double> defaultAction() const { return {}; }
 };
+
+// The tasks' states as the rows of a batch (the actor's input).
+PolicyBatch statesOf(const std::vector<EpisodeTask>& tasks, int stateSize);
+
+// Mean, median and count of a set of rewards, and how many are above -1, the reward of an
+// invalid mesh (every summary the trainer, its progress line and the benches print).
+struct RewardSummary {
+  double mean = 0, median = 0;  // 0 for no rewards
+  int valid = 0, count = 0;
+};
+RewardSummary summarizeRewards(const std::vector<double>& rewards);
 
 // The random stream `stream` of episode `episode` under `seed`: independent streams
 // without a shared generator (seeded through std::seed_seq, deterministic everywhere).
