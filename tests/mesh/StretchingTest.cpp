@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <cmath>
 #include "passageMesh/mesh/Stretching.hpp"
 
 #include <gtest/gtest.h>
@@ -61,10 +63,38 @@ TEST(Stretching, LastSpacingIsMovedWhileTheFirstStaysExact) {
     EXPECT_NEAR(s[n - 1] - s[n - 2], last, 1e-12) << last;
     for (int j = 1; j < n; ++j) ASSERT_GT(s[j] - s[j - 1], 0.5 * (plain[j] - plain[j - 1])) << last << " " << j;
   }
-  // A last spacing no such correction reaches is approached without folding: every
-  // spacing stays above half the plain one.
-  auto far = plain;
-  moveLastSpacing(far, 1.0);
-  for (int j = 1; j < n; ++j) ASSERT_GT(far[j] - far[j - 1], 0.5 * (plain[j] - plain[j - 1])) << j;
-  EXPECT_GT(far[n - 1] - far[n - 2], plain[n - 1] - plain[n - 2]);
+  // A last spacing no such correction reaches is approached without folding: no spacing
+  // falls below half the plain one (the binding one sits at half, to round-off).
+  for (double unreachable : {1.0, 1e-7}) {
+    auto far = plain;
+    moveLastSpacing(far, unreachable);
+    for (int j = 1; j < n; ++j)
+      ASSERT_GE(far[j] - far[j - 1], 0.5 * (plain[j] - plain[j - 1]) * (1 - 1e-12)) << unreachable << " " << j;
+    const double moved = far[n - 1] - far[n - 2], before = plain[n - 1] - plain[n - 2];
+    EXPECT_TRUE(unreachable > before ? moved > before : moved < before) << unreachable;
+  }
+}
+
+// The nodes move continuously with the wanted last spacing, also across the point where
+// the correction starts to be clipped: Q along the meshing parameters has no jumps from
+// here (docs/benchmarks.md, "Q along each meshing parameter").
+TEST(Stretching, MovedDistancesAreContinuousInTheLastSpacing) {
+  const int n = 40;
+  const auto plain = wallClusteredDistances(n, 0.5, 1e-4);
+  auto moved = [&](double last) {
+    auto s = plain;
+    moveLastSpacing(s, last);
+    return s;
+  };
+  // A fine scan: between neighbouring values the nodes move by at most about 2 step
+  // (the slope of the correction); a jump moves them by a sizeable part of a spacing.
+  const double step = 1e-5;
+  double largest = 0;
+  auto previous = moved(0.002);
+  for (double last = 0.002 + step; last < 0.2; last += step) {
+    const auto next = moved(last);
+    for (int j = 0; j < n; ++j) largest = std::max(largest, std::abs(next[j] - previous[j]));
+    previous = next;
+  }
+  EXPECT_LT(largest, 10 * step);
 }

@@ -50,9 +50,8 @@ void redistributeAlongLines(const StructuredBlock& lines, StructuredBlock& targe
     const double wallSpacing = 0.5 * ((node(lines, (i + 1) % n, 0) - b).norm() +
                                       (b - node(lines, (i + n - 1) % n, 0)).norm());
     auto d = wallClusteredDistances(target.nj, c.back(), firstSpacing);
-    // 90 % of the way to the loop spacing: measured Q of the tutorials at the defaults,
-    // all the way 0.525 / 0.558 / 0.572 / 0.578 (LS89 / STD10 / T106A / SIRT), 90 %
-    // 0.541 / 0.559 / 0.578 / 0.578, 75 % 0.535 / 0.561 / 0.579 / 0.578.
+    // 90 % of the way to the loop spacing: the best of 75, 90 and 100 % on the tutorials
+    // (docs/elliptic-smoothing.md has the figures).
     const double plainLast = d[d.size() - 1] - d[d.size() - 2];
     moveLastSpacing(d, plainLast + 0.9 * (loopSpacing - plainLast));
     for (int j = 0; j < target.nj; ++j) {

@@ -63,22 +63,25 @@ std::vector<double> wallClusteredDistances(int n, double length, double firstSpa
 void moveLastSpacing(std::vector<double>& s, double lastSpacing) {
   const int last = static_cast<int>(s.size()) - 1;
   if (last < 2 || !(lastSpacing > 0)) return;
-  // The last spacing grows by c h (1 - h)^8, h = 1 / last.
+  // s_j grows by c f(t_j), f(t) = t^8 (t - 1), t_j = j / last: f vanishes at both ends, so
+  // the ends stay, and the last spacing grows by c (f(1) - f(1 - h)) = c h (1 - h)^8.
   const double h = 1.0 / last;
-  double c = (lastSpacing - (s[last] - s[last - 1])) / (h * std::pow(1 - h, 8));
-  for (int attempt = 0; attempt < 20; ++attempt, c *= 0.5) {
-    std::vector<double> moved(s);
-    for (int j = 1; j < last; ++j) {
-      const double t = static_cast<double>(j) / last;
-      moved[j] += c * std::pow(t, 8) * (t - 1);
-    }
-    bool monotone = true;
-    for (int j = 1; j <= last && monotone; ++j) monotone = moved[j] - moved[j - 1] > 0.5 * (s[j] - s[j - 1]);
-    if (monotone) {
-      s = std::move(moved);
-      return;
-    }
+  auto f = [last](int j) {
+    const double t = static_cast<double>(j) / last;
+    return std::pow(t, 8) * (t - 1);
+  };
+  const double wanted = (lastSpacing - (s[last] - s[last - 1])) / (h * std::pow(1 - h, 8));
+  // The largest |c| of that sign for which no spacing falls below half of what it was:
+  // s_j - s_{j-1} + c (f_j - f_{j-1}) >= (s_j - s_{j-1}) / 2. Clipping c there (rather than
+  // halving it until the spacings pass, as before 2026-12-02) keeps the nodes continuous
+  // in lastSpacing and in the line length, and so Q continuous in the meshing parameters.
+  double limit = std::abs(wanted);
+  for (int j = 1; j <= last; ++j) {
+    const double change = wanted >= 0 ? f(j) - f(j - 1) : f(j - 1) - f(j);  // per unit |c|
+    if (change < 0) limit = std::min(limit, 0.5 * (s[j] - s[j - 1]) / -change);
   }
+  const double c = std::copysign(limit, wanted);
+  for (int j = 1; j < last; ++j) s[j] += c * f(j);
 }
 
 }  // namespace passageMesh

@@ -30,8 +30,8 @@ std::vector<double> wallClusteredDistances(int n, double length, double firstSpa
 
 // Moves the last spacing of increasing distances s_0 .. s_m (m >= 2) to `lastSpacing`,
 // keeping both ends: c t^8 (t - 1), t = j / m, is added to each, c chosen so the last
-// spacing becomes `lastSpacing`, halved (up to 20 times, else nothing changes) while any
-// spacing would fall below half of what it was. t^8 leaves the first spacing exact (to
+// spacing becomes `lastSpacing`, clipped where a spacing would fall to half of what it
+// was (continuous in the arguments: no node jumps). t^8 leaves the first spacing exact (to
 // round-off) and the wall half of a line unchanged; LineRedistribution uses it to match
 // the cells beyond the outer loop (the H-blocks and the periodic images).
 void moveLastSpacing(std::vector<double>& distances, double lastSpacing);
