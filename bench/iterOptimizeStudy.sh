@@ -6,7 +6,8 @@
 #   bench/iterOptimizeStudy.sh [budget=1000] [seeds=10] [method=cmaes] [out=docs/iterOptimize]
 #
 # Writes OUT/<blade>-<method>.csv (evaluation, then the best Q so far of every seed, then
-# mean, min and max over the seeds) and OUT/<blade>-<method>.png, and prints per blade the
+# mean, min and max over the seeds), OUT/<blade>-<method>.png and OUT/<blade>-best-meshDict.xml
+# (the meshing parameters of the study's best seed), and prints per blade the
 # best Q ever found (this study or docs/iterOptimize/best-ever.csv), how many seeds reach
 # 0.99 of it, the median over the seeds of the evaluations needed (inf: most never do),
 # and the median final best Q.
@@ -39,12 +40,16 @@ for blade in LS89 STD10 T106A SIRT; do
       iterOptimize -case "$run" -budget "$budget" -seed "$1" -method "$method" -threads 1 > /dev/null 2>&1 || true
       # column of best-so-far Q (the last column of history.csv)
       awk -F, 'NR > 1 { print $NF }' "$run/postProcessing/iterOptimize/history.csv" > "$work/$blade-$1.best"
+      cp "$run/system/meshDict.xml" "$work/$blade-$1.meshDict.xml" 2> /dev/null || true
     }
     for seed in $(seq 1 "$seeds"); do
       while [ "$(jobs -rp | wc -l)" -ge "$parallel" ]; do wait -n; done
       runSeed "$seed" &
     done
     wait
+    bestSeed=$(for s in $(seq 1 "$seeds"); do echo "$(tail -n 1 "$work/$blade-$s.best") $s"; done | sort -g | tail -n 1 | cut -d' ' -f2)
+    cp "$work/$blade-$bestSeed.meshDict.xml" "$out/$blade-best-meshDict.xml" 2> /dev/null ||
+      echo "iterOptimizeStudy.sh: warning: no meshDict.xml from $blade seed $bestSeed" >&2
     paste -d, $(for s in $(seq 1 "$seeds"); do echo "$work/$blade-$s.best"; done) |
       awk -F, -v n="$seeds" 'BEGIN { printf "evaluation"; for (s = 1; s <= n; ++s) printf ",seed%d", s; print ",mean,min,max" }
         { sum = 0; lo = 1e9; hi = -1e9; printf "%d", NR

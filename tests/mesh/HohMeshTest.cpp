@@ -103,3 +103,22 @@ TEST(HohMesh, SaysWhenAPeriodicBoundaryCutsTheBlade) {
   const HohMesh ok = buildHohMesh(blade, c, MeshingParameters::defaults(C));
   EXPECT_EQ(ok.problem.find("cuts the blade"), std::string::npos) << ok.problem;
 }
+
+// An interface at the edge itself (xOut = 0, or betaIn xIn = 0) cuts the rounded edge:
+// no mesh exists either, and the result names the interface.
+TEST(HohMesh, SaysWhenAnInterfaceCutsTheBlade) {
+  const BladeShape blade(testData::typicalTurbineBlade());
+  const double C = blade.parameters().chord;
+  PassageCondition c = paperCondition(C);
+  c.xOut = 0;
+  HohMesh hoh = buildHohMesh(blade, c, MeshingParameters::defaults(C));
+  EXPECT_FALSE(hoh.valid);
+  EXPECT_NE(hoh.problem.find("the outlet interface (x = "), std::string::npos) << hoh.problem;
+  EXPECT_EQ(hoh.smoothing.iterations, 0);
+  c = paperCondition(C);
+  MeshingParameters m = MeshingParameters::defaults(C);
+  m.betaIn = 0;
+  hoh = buildHohMesh(blade, c, m);
+  EXPECT_FALSE(hoh.valid);
+  EXPECT_NE(hoh.problem.find("the inlet interface (x = "), std::string::npos) << hoh.problem;
+}

@@ -105,3 +105,32 @@ TEST(BladeShape, CamberYInvertsTheCamberLine) {
     EXPECT_NEAR(blade.camberY(c.x()), c.y(), 1e-12);
   }
 }
+
+TEST(PassageBoundary, ClearanceIsTheRoomBetweenBladeAndOuterLoop) {
+  const BladeShape blade(testData::typicalTurbineBlade());
+  const double C = blade.parameters().chord;
+  auto c = condition(C);
+  MeshingParameters m;  // periodic boundaries along the camber line, midway between blades
+  const double roomy = bladeClearance(blade, PassageBoundary(blade, c, m));
+  EXPECT_GT(roomy, 0.05 * C);
+  EXPECT_LT(roomy, 0.5 * c.pitch);
+  // The outlet interface through the trailing-edge point (xOut = 0) cuts the rounded edge
+  // behind it: no room, by about the edge's radius (under 2 % of the chord).
+  c.xOut = 0;
+  const double cut = bladeClearance(blade, PassageBoundary(blade, c, m));
+  EXPECT_LE(cut, 0.0);
+  EXPECT_GT(cut, -0.02 * C);
+  // The inlet interface moved towards the leading edge: the clearance there is its
+  // distance from the leading edge, as long as that is the smallest.
+  c = condition(C);
+  m.betaIn = 0.01 / (c.xIn / C);  // 0.01 chord upstream of the leading edge
+  const double nearInlet = bladeClearance(blade, PassageBoundary(blade, c, m));
+  EXPECT_GT(nearInlet, 0.0);
+  EXPECT_LE(nearInlet, 0.01 * C * (1 + 1e-9));
+  // A periodic boundary pushed through the blade: negative.
+  c = condition(C);
+  m = MeshingParameters{};
+  m.yIn = 0.6 * c.pitch;
+  m.yOut = 0.6 * c.pitch;
+  EXPECT_LT(bladeClearance(blade, PassageBoundary(blade, c, m)), 0.0);
+}

@@ -102,23 +102,37 @@ StructuredBlock hBlock(const std::string& name, double xBegin, double xEnd, bool
   return h;
 }
 
-// The blade must lie strictly between the periodic boundaries. Large yIn or yOut, or a
-// small alphaCamber at a small pitch, make one of them cut through the blade: then no
+// The blade must lie strictly inside the O-block's outer loop: between the periodic
+// boundaries and between the interfaces. Large yIn or yOut, or a small alphaCamber at a
+// small pitch, make a periodic boundary cut through the blade; an interface at the leading
+// or trailing edge (betaIn xIn or betaOut xOut near 0) cuts the rounded edge. Then no
 // mesh exists, and saying so here is clearer (and cheaper) than the folded cells or the
 // diverging smoother it would otherwise end in.
-std::string periodicBoundaryCrossing(const PassageBoundary& boundary,
-                                     const std::vector<BladeNode>& wall) {
+std::string outerLoopCrossing(const PassageBoundary& boundary, const std::vector<BladeNode>& wall) {
+  auto at = [](double v) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.6g m", v);
+    return std::string(text);
+  };
+  // The periodic boundaries first: a draw they cut has no passage at all (the robustness
+  // sweep's denominator counts the others).
   for (const auto& node : wall) {
     const double x = node.point.x(), y = node.point.y();
-    if (x < boundary.inletInterfaceX() || x > boundary.outletInterfaceX()) continue;
+    if (x <= boundary.inletInterfaceX() || x >= boundary.outletInterfaceX()) continue;
     const bool below = y <= boundary.lowerY(x), above = y >= boundary.upperY(x);
-    if (below || above) {
-      char where[64];
-      std::snprintf(where, sizeof where, "%.6g m", x);
+    if (below || above)
       return std::string("the ") + (below ? "lower" : "upper") +
-             " periodic boundary cuts the blade at x = " + where +
+             " periodic boundary cuts the blade at x = " + at(x) +
              " (yIn, yOut or alphaCamber too far from the camber line for this pitch)";
-    }
+  }
+  for (const auto& node : wall) {
+    const double x = node.point.x(), y = node.point.y();
+    if (x <= boundary.inletInterfaceX())
+      return "the inlet interface (x = " + at(boundary.inletInterfaceX()) +
+             ") cuts the blade at y = " + at(y) + " (betaIn xIn too small)";
+    if (x >= boundary.outletInterfaceX())
+      return "the outlet interface (x = " + at(boundary.outletInterfaceX()) +
+             ") cuts the blade at y = " + at(y) + " (betaOut xOut too small)";
   }
   return "";
 }
@@ -134,7 +148,7 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
   const PassageBoundary boundary(blade, condition, parameters);
 
   const auto wall = distributeBladeNodes(blade, nT, parameters.gammaLe, parameters.gammaTe);
-  result.problem = periodicBoundaryCrossing(boundary, wall);
+  result.problem = outerLoopCrossing(boundary, wall);
   if (!result.problem.empty()) return result;
   int lowerIntervals = 0;
   while (wall[static_cast<std::size_t>(lowerIntervals)].side == BladeSide::lower) ++lowerIntervals;

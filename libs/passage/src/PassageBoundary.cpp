@@ -1,5 +1,9 @@
 #include "passageMesh/passage/PassageBoundary.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 namespace passageMesh {
 
 PassageBoundary::PassageBoundary(const BladeShape& blade, const PassageCondition& condition,
@@ -27,6 +31,48 @@ double PassageBoundary::lowerY(double x) const {
   const double yL = yInlet + (yOutlet - yInlet) * (1 - sx);
   const double a = parameters_.alphaCamber;
   return a * yC + (1 - a) * yL;
+}
+
+namespace {
+
+// Distance from p to the segment a-b.
+double segmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d d = b - a;
+  const double length2 = d.squaredNorm();
+  const double t = length2 > 0 ? std::clamp((p - a).dot(d) / length2, 0.0, 1.0) : 0.0;
+  return (a + t * d - p).norm();
+}
+
+}  // namespace
+
+double bladeClearance(const BladeShape& blade, const PassageBoundary& boundary) {
+  constexpr int samples = 400;
+  const double xA = boundary.inletInterfaceX(), xB = boundary.outletInterfaceX();
+  // The loop as a polyline: lower periodic, outlet interface, upper periodic (backwards),
+  // inlet interface, closed.
+  std::vector<Eigen::Vector2d> loop;
+  for (int k = 0; k <= samples; ++k) {
+    const double x = xA + (xB - xA) * k / samples;
+    loop.emplace_back(x, boundary.lowerY(x));
+  }
+  for (int k = samples; k >= 0; --k) {
+    const double x = xA + (xB - xA) * k / samples;
+    loop.emplace_back(x, boundary.upperY(x));
+  }
+  loop.push_back(loop.front());
+  double clearance = INFINITY;
+  for (BladeSide side : {BladeSide::lower, BladeSide::upper})
+    for (double u : blade.sideParameters(samples)) {
+      const Eigen::Vector2d p = blade.point(side, u);
+      // A blade point beyond an interface or beyond a periodic boundary is outside the loop.
+      const bool inside = p.x() > xA && p.x() < xB && p.y() > boundary.lowerY(p.x()) &&
+                          p.y() < boundary.upperY(p.x());
+      double nearest = INFINITY;
+      for (std::size_t k = 0; k + 1 < loop.size(); ++k)
+        nearest = std::min(nearest, segmentDistance(p, loop[k], loop[k + 1]));
+      clearance = std::min(clearance, inside ? nearest : -nearest);
+    }
+  return clearance;
 }
 
 }  // namespace passageMesh
