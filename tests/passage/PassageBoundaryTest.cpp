@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "../blade/BladeTestData.hpp"
@@ -35,6 +36,17 @@ double paperLowerY(const BladeShape& blade, const PassageCondition& c, const Mes
   return m.alphaCamber * yc + (1 - m.alphaCamber) * yl;
 }
 
+// Half-widths of the fillets at the leading and trailing edge (PassageBoundary.hpp).
+struct FilletWindows {
+  double leading, trailing;
+};
+FilletWindows filletWindows(const BladeShape& blade, const PassageBoundary& b) {
+  const double xle = blade.leadingEdge().x(), xte = blade.trailingEdge().x();
+  const double limit = std::min(0.2 * blade.parameters().chord, 0.25 * (xte - xle));
+  return {std::min(limit, 0.5 * (xle - b.inletInterfaceX())),
+          std::min(limit, 0.5 * (b.outletInterfaceX() - xte))};
+}
+
 }  // namespace
 
 TEST(PassageBoundary, FollowsThePaperFormulaForAStaggeredBlade) {
@@ -44,8 +56,10 @@ TEST(PassageBoundary, FollowsThePaperFormulaForAStaggeredBlade) {
   const auto m = parameters(C);
   const PassageBoundary boundary(blade, c, m);
   const double xle = blade.leadingEdge().x(), xte = blade.trailingEdge().x();
+  const FilletWindows w = filletWindows(blade, boundary);
   for (int k = 1; k < 50; ++k) {
     const double x = xle + (xte - xle) * k / 50.0;
+    if (x < xle + w.leading || x > xte - w.trailing) continue;  // the fillets: below
     // The blend weight w = D^2/(D^2 + d^2) is 0.994 here: agree to 1 % of the offsets.
     EXPECT_NEAR(boundary.lowerY(x), paperLowerY(blade, c, m, x), 0.01 * 0.3 * C) << x;
     EXPECT_DOUBLE_EQ(boundary.upperY(x), boundary.lowerY(x) + c.pitch);
@@ -71,6 +85,7 @@ TEST(PassageBoundary, IsContinuousAndFiniteWhenEdgesAreLevel) {
   const auto m = parameters(C);
   const PassageBoundary boundary(blade, c, m);
   const double xle = blade.leadingEdge().x(), xte = blade.trailingEdge().x();
+  const FilletWindows w = filletWindows(blade, boundary);
   const double eps = 1e-9 * C;
   EXPECT_NEAR(boundary.lowerY(xle + eps), boundary.lowerY(xle - eps), 1e-6 * C);
   EXPECT_NEAR(boundary.lowerY(xte - eps), boundary.lowerY(xte + eps), 1e-6 * C);
@@ -78,6 +93,7 @@ TEST(PassageBoundary, IsContinuousAndFiniteWhenEdgesAreLevel) {
     const double x = xle + (xte - xle) * k / 100.0;
     const double y = boundary.lowerY(x);
     ASSERT_TRUE(std::isfinite(y));
+    if (x < xle + w.leading || x > xte - w.trailing) continue;  // the fillets
     // Here s is linear in x: the boundary is the camber line shifted by an offset going
     // linearly from yIn to yOut, blended with the straight line.
     const double s = (xte - x) / (xte - xle);
@@ -93,9 +109,54 @@ TEST(PassageBoundary, AlphaZeroIsTheStraightLine) {
   auto m = parameters(C);
   m.alphaCamber = 0;
   const PassageBoundary boundary(blade, condition(C), m);
+  const FilletWindows w = filletWindows(blade, boundary);
+  const double xa = blade.leadingEdge().x() + w.leading, xb = blade.trailingEdge().x() - w.trailing;
+  const double y0 = boundary.lowerY(xa), y1 = boundary.lowerY(xb);
+  for (double f : {0.25, 0.5, 0.75})
+    EXPECT_NEAR(boundary.lowerY(xa + f * (xb - xa)), y0 + f * (y1 - y0), 1e-12 * C) << f;
+}
+
+// The paper's curve has slope kinks at the edges; the fillets remove them (C1 everywhere
+// between the interfaces), lie on the concave side of each kink, and leave the boundary
+// flat and exact next to the interfaces.
+TEST(PassageBoundary, FilletsMakeTheBoundarySmoothAtTheEdges) {
+  const BladeShape blade(testData::typicalTurbineBlade());
+  const double C = blade.parameters().chord;
+  const auto c = condition(C);
+  const auto m = parameters(C);
+  const PassageBoundary boundary(blade, c, m);
   const double xle = blade.leadingEdge().x(), xte = blade.trailingEdge().x();
-  const double y0 = boundary.lowerY(xle), y1 = boundary.lowerY(xte + 1e-12);
-  EXPECT_NEAR(boundary.lowerY(0.5 * (xle + xte)), 0.5 * (y0 + y1), 1e-12 * C);
+  const FilletWindows w = filletWindows(blade, boundary);
+  ASSERT_GT(w.leading, 0.05 * C);
+  ASSERT_GT(w.trailing, 0.05 * C);
+  // No slope jump: neighbouring difference quotients differ by curvature x step only.
+  const double h = 1e-5 * C, xA = boundary.inletInterfaceX(), xB = boundary.outletInterfaceX();
+  double largestJump = 0;
+  for (double x = xA + h; x + 2 * h < xB; x += h) {
+    const double left = (boundary.lowerY(x) - boundary.lowerY(x - h)) / h;
+    const double right = (boundary.lowerY(x + h) - boundary.lowerY(x)) / h;
+    largestJump = std::max(largestJump, std::abs(right - left));
+  }
+  EXPECT_LT(largestJump, 0.01);
+  // The paper's curve does jump in slope at both edges: the test sees a kink when there is one.
+  auto paperAt = [&](double x) {  // the paper's curve, flat parts included
+    if (x < xle) return blade.leadingEdge().y() + m.yIn - c.pitch / 2;
+    if (x >= xte) return blade.trailingEdge().y() + m.yOut - c.pitch / 2;
+    return paperLowerY(blade, c, m, x);
+  };
+  for (double xk : {xle, xte}) {
+    const double jump = (paperAt(xk + h) - paperAt(xk)) / h - (paperAt(xk) - paperAt(xk - h)) / h;
+    EXPECT_GT(std::abs(jump), 0.1) << xk;
+    // Slope rising across the kink (a valley): the fillet lies above the kink; falling
+    // (a ridge): below. The blend weight of the paper formula (0.994) is within 1e-3 C.
+    const double offset = boundary.lowerY(xk) - paperAt(xk);
+    EXPECT_GT(jump > 0 ? offset : -offset, 1e-4 * C) << xk;
+  }
+  // Flat and exact between each interface and its fillet.
+  EXPECT_DOUBLE_EQ(boundary.lowerY(xA), blade.leadingEdge().y() + m.yIn - c.pitch / 2);
+  EXPECT_DOUBLE_EQ(boundary.lowerY(xle - w.leading - h), boundary.lowerY(xA));
+  EXPECT_DOUBLE_EQ(boundary.lowerY(xB), blade.trailingEdge().y() + m.yOut - c.pitch / 2);
+  EXPECT_DOUBLE_EQ(boundary.lowerY(xte + w.trailing + h), boundary.lowerY(xB));
 }
 
 TEST(BladeShape, CamberYInvertsTheCamberLine) {

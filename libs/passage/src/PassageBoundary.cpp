@@ -12,9 +12,50 @@ PassageBoundary::PassageBoundary(const BladeShape& blade, const PassageCondition
       condition_(condition),
       parameters_(parameters),
       le_(blade.leadingEdge()),
-      te_(blade.trailingEdge()) {}
+      te_(blade.trailingEdge()) {
+  const double chord = blade.parameters().chord, axial = te_.x() - le_.x();
+  const double limit = std::min(0.2 * chord, 0.25 * axial);
+  leadingFillet_ = filletAt(le_.x(), std::min(limit, 0.5 * (le_.x() - inletInterfaceX())));
+  trailingFillet_ = filletAt(te_.x(), std::min(limit, 0.5 * (outletInterfaceX() - te_.x())));
+}
+
+PassageBoundary::Fillet PassageBoundary::filletAt(double xKink, double halfWidth) const {
+  Fillet f;
+  if (!(halfWidth > 0)) return f;
+  f.x0 = xKink - halfWidth;
+  f.x2 = xKink + halfWidth;
+  f.y0 = pieceY(f.x0);
+  f.y2 = pieceY(f.x2);
+  // One-sided slopes, each inside its own piece.
+  const double h = 1e-4 * halfWidth;
+  const double m0 = (f.y0 - pieceY(f.x0 - h)) / h, m2 = (pieceY(f.x2 + h) - f.y2) / h;
+  f.x1 = xKink;  // no kink (or tangents that meet outside the window): the midpoint
+  f.y1 = pieceY(xKink);
+  if (std::abs(m0 - m2) > 1e-9) {
+    const double x1 = (f.y2 - f.y0 + m0 * f.x0 - m2 * f.x2) / (m0 - m2);
+    if (x1 > f.x0 + 0.05 * halfWidth && x1 < f.x2 - 0.05 * halfWidth) {
+      f.x1 = x1;
+      f.y1 = f.y0 + m0 * (x1 - f.x0);
+    }
+  }
+  return f;
+}
+
+double PassageBoundary::Fillet::y(double x) const {
+  // x(t) = x0 + b t + a t^2 with b = 2 (x1 - x0) > 0: the root in [0, 1], in the form
+  // that stays accurate as a -> 0.
+  const double a = x0 - 2 * x1 + x2, b = 2 * (x1 - x0), dx = x - x0;
+  const double t = 2 * dx / (b + std::sqrt(std::max(0.0, b * b + 4 * a * dx)));
+  return (1 - t) * (1 - t) * y0 + 2 * t * (1 - t) * y1 + t * t * y2;
+}
 
 double PassageBoundary::lowerY(double x) const {
+  if (leadingFillet_.covers(x)) return leadingFillet_.y(x);
+  if (trailingFillet_.covers(x)) return trailingFillet_.y(x);
+  return pieceY(x);
+}
+
+double PassageBoundary::pieceY(double x) const {
   const double halfPitch = 0.5 * condition_.pitch;
   const double yInlet = le_.y() + parameters_.yIn - halfPitch;
   const double yOutlet = te_.y() + parameters_.yOut - halfPitch;

@@ -15,6 +15,17 @@
 // written as w s_paper = D (y_camber - y_te) / (D^2 + d^2), which stays finite. For
 // |D| >> d it is the paper's formula; at both edges s is exactly 1 and 0, so the boundary
 // is continuous. The upper boundary is the lower one plus the pitch.
+//
+// Departure from the paper (2026-12-02): that curve has a slope kink at x_le and at x_te,
+// where the flat parts meet the camber-following part. At each kink, where it opens into
+// the O-block, the grid lines reach the boundary at a grazing angle: the worst cells of the
+// tutorials and many folds of the robustness sweep sat there (docs/elliptic-smoothing.md).
+// Each kink is therefore replaced by a quadratic Bezier fillet from x_k - d to x_k + d.
+// Its control points are the curve's points at the window ends and the intersection of
+// the tangents there, so the boundary stays C1 and the fillet lies on the concave side.
+// d = min(0.2 chord, half the distance from the edge to its interface, a quarter of the
+// axial chord). So the boundary stays flat at the interfaces, where the corners of the
+// outer loop stay at 90 degrees.
 #include <Eigen/Core>
 
 #include "passageMesh/blade/BladeShape.hpp"
@@ -38,10 +49,21 @@ class PassageBoundary {
   double upperY(double x) const { return lowerY(x) + condition_.pitch; }
 
  private:
+  // A quadratic Bezier arc y(x) over [x0, x2] with control points (x0, y0), (x1, y1),
+  // (x2, y2), x0 < x1 < x2 (so x(t) is monotone); empty when x0 == x2.
+  struct Fillet {
+    double x0 = 0, x1 = 0, x2 = 0, y0 = 0, y1 = 0, y2 = 0;
+    bool covers(double x) const { return x2 > x0 && x > x0 && x < x2; }
+    double y(double x) const;
+  };
+  double pieceY(double x) const;  // the paper's curve, kinks included
+  Fillet filletAt(double xKink, double halfWidth) const;
+
   const BladeShape& blade_;
   PassageCondition condition_;
   MeshingParameters parameters_;
   Eigen::Vector2d le_, te_;
+  Fillet leadingFillet_, trailingFillet_;
 };
 
 // The smallest distance [m] between the blade and the O-block's outer loop (the inlet and
