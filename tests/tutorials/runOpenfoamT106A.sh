@@ -5,16 +5,9 @@
 # exit angle within 2 deg of 63.2, y+ reported); exit 77 (skipped) without simpleFoam.
 #   runOpenfoamT106A.sh SOURCE_DIR BUILD_DIR
 set -uo pipefail
-source="$1"
-export PASSAGEMESH_BUILD="$2"
-export PATH="$PASSAGEMESH_BUILD/bin:$PATH"
 command -v simpleFoam > /dev/null || { echo "simpleFoam not installed (Debian: openfoam): skipped"; exit 77; }
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$work/tutorials"
-cp -r "$source/etc" "$work/"
-cp -r "$source/tutorials/T106A" "$work/tutorials/"
-(cd "$work/tutorials/T106A" && ./Allclean > /dev/null 2>&1 || true)
+. "$(dirname "$0")/tutorialWorkspace.sh" "$1" "$2"
+copyTutorial T106A
 "$work/tutorials/T106A/Allrun.openfoam" > "$work/allrun.log" 2>&1
 status=$?
 tail -n 14 "$work/allrun.log"

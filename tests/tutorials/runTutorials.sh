@@ -6,18 +6,10 @@
 # one-shot Q as recorded in etc/policy/tutorialOneShot.csv (issue 12).
 #   runTutorials.sh SOURCE_DIR BUILD_DIR
 set -euo pipefail
-source="$1"
-export PASSAGEMESH_BUILD="$2"
-export PATH="$PASSAGEMESH_BUILD/bin:$PATH"
 command -v cgnscheck > /dev/null || { echo "cgnscheck not installed (Debian: cgns-convert)"; exit 1; }
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-# Allrun sources etc/ relative to the case: copy the tree the case needs.
-mkdir -p "$work/tutorials"
-cp -r "$source/etc" "$work/"
+. "$(dirname "$0")/tutorialWorkspace.sh" "$1" "$2"
 for blade in LS89 STD10 T106A SIRT; do
-  cp -r "$source/tutorials/$blade" "$work/tutorials/"
-  (cd "$work/tutorials/$blade" && ./Allclean > /dev/null 2>&1 || true)
+  copyTutorial "$blade"
   "$work/tutorials/$blade/Allrun"
   report="$(cgnscheck "$work/tutorials/$blade/mesh/passage.cgns" 2>&1)"
   if grep -Eiq "warning|error" <<< "$report"; then
