@@ -6,16 +6,21 @@
 //
 //   build/bench/meshDefaultsSearch [budget=60] [passages=200] [threads=2]
 //                                  [seed=20261201] [confirmSeed=20261202] [patternShare=0.15]
+//                                  [keepTutorialsValid=1]
 //
 // An invalid mesh (or a periodic boundary through the blade) counts as Q = -1, so the
-// median also rewards parameter sets that mesh more passages. Prints the progress, the
-// best set as meshDict lines and the confirmation table (docs/benchmarks.md).
+// median also rewards parameter sets that mesh more passages. With keepTutorialsValid a
+// set that leaves any of the four tutorials (at their passageDict) without a valid mesh
+// scores -1 as a whole: the defaults are what the tutorials mesh with. Prints the
+// progress, the best set as meshDict lines, the tutorials' Q with both sets and the
+// confirmation table (docs/benchmarks.md).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
 
+#include "TutorialPassage.hpp"
 #include "passageMesh/core/ParallelFor.hpp"
 #include "passageMesh/mesh/HohMesh.hpp"
 #include "passageMesh/optimize/MeshingParameterSpace.hpp"
@@ -71,6 +76,18 @@ void printParameters(const char* label, const Eigen::VectorXd& v) {
   std::printf("\n");
 }
 
+// Q of each tutorial meshed with the set (invalidMeshQuality where the mesh is invalid).
+std::vector<double> tutorialQualities(const std::vector<bench::TutorialPassage>& tutorials,
+                                      const Eigen::VectorXd& v, int threads) {
+  std::vector<double> q(tutorials.size());
+  parallelFor(static_cast<int>(tutorials.size()), threads, [&](int k) {
+    const bench::TutorialPassage& t = tutorials[static_cast<std::size_t>(k)];
+    const HohMesh hoh = buildHohMesh(BladeShape(t.blade), t.condition, forChord(v, t.blade.chord));
+    q[static_cast<std::size_t>(k)] = hoh.valid ? computeMeshQuality(hoh.mesh).Q : invalidMeshQuality;
+  });
+  return q;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -80,10 +97,13 @@ int main(int argc, char** argv) {
   const std::uint64_t seed = argc > 4 ? std::strtoull(argv[4], nullptr, 10) : 20261201;
   const std::uint64_t confirmSeed = argc > 5 ? std::strtoull(argv[5], nullptr, 10) : 20261202;
   const double patternShare = argc > 6 ? std::atof(argv[6]) : 0.15;
+  const bool keepTutorialsValid = argc > 7 ? std::atoi(argv[7]) != 0 : true;
   if (budget < 1 || count < 1 || threads < 1) {
-    std::fprintf(stderr, "usage: meshDefaultsSearch [budget>=1] [passages>=1] [threads>=1] [seed] [confirmSeed] [patternShare]\n");
+    std::fprintf(stderr, "usage: meshDefaultsSearch [budget>=1] [passages>=1] [threads>=1] [seed] [confirmSeed] [patternShare] [keepTutorialsValid]\n");
     return 2;
   }
+  std::vector<bench::TutorialPassage> tutorials;
+  for (const auto& name : bench::tutorialNames()) tutorials.push_back(bench::loadTutorialPassage(name));
   const std::vector<PassageDraw> passages = samplePassages(count, seed);
   const Eigen::VectorXd defaults = toOptimizerVector(MeshingParameters::defaults(1.0));
   const auto start = std::chrono::steady_clock::now();
@@ -100,7 +120,11 @@ int main(int argc, char** argv) {
   };
   const BatchObjective objective = [&](const std::vector<Eigen::VectorXd>& points) {
     std::vector<double> values;
-    for (const auto& v : points) values.push_back(quantile(qualities(passages, v, threads), 0.5));
+    for (const auto& v : points) {
+      const auto tq = keepTutorialsValid ? tutorialQualities(tutorials, v, threads) : std::vector<double>{};
+      const bool tutorialInvalid = std::any_of(tq.begin(), tq.end(), [](double q) { return q <= invalidMeshQuality; });
+      values.push_back(tutorialInvalid ? invalidMeshQuality : quantile(qualities(passages, v, threads), 0.5));
+    }
     return values;
   };
   const OptimizationResult result = optimize(meshingParameterProblem(1.0), objective, options);
@@ -108,6 +132,10 @@ int main(int argc, char** argv) {
   printParameters("best", result.best);
   std::printf("best median Q over the search passages (seed %llu): %.6f\n",
               static_cast<unsigned long long>(seed), result.bestValue);
+  const auto before = tutorialQualities(tutorials, defaults, threads), after = tutorialQualities(tutorials, result.best, threads);
+  std::printf("\ntutorials (Q, -1 invalid): | blade | current defaults | best of the search |\n");
+  for (std::size_t k = 0; k < tutorials.size(); ++k)
+    std::printf("| %s | %.4f | %.4f |\n", tutorials[k].name.c_str(), before[k], after[k]);
 
   const std::vector<PassageDraw> confirm = samplePassages(count, confirmSeed);
   std::printf("\nconfirmation on %d passages of seed %llu:\n| parameters | valid | Q 25 %% | Q median | Q 75 %% |\n|---|---|---|---|---|\n",

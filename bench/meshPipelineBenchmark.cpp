@@ -12,9 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "passageMesh/blade/BladeFit.hpp"
-#include "passageMesh/blade/BladePoints.hpp"
-#include "passageMesh/core/PointFile.hpp"
+#include "TutorialPassage.hpp"
 #include "passageMesh/mesh/HohMesh.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
 
@@ -22,16 +20,13 @@ using namespace passageMesh;
 
 int main(int argc, char** argv) {
   const int repetitions = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
-  const std::filesystem::path tutorials = std::filesystem::path(PASSAGEMESH_SOURCE_DIR) / "tutorials";
   std::printf("| blade | O-block | V-cycles | control sweeps | residual | median time [s] | Q_J min | Q_J mean | "
               "Q_S min | Q_S mean | Q |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
-  for (const std::string name : {"LS89", "STD10", "T106A", "SIRT"}) {
-    const auto dir = tutorials / name;
-    const auto points = orderBladePoints(readPointFile(dir / "constant" / "bladePoints.dat")).points;
-    const BladeShape blade(fitBlade(points).parameters);
-    const double chord = blade.parameters().chord;
-    const auto condition = readPassageDict(dir / "system" / "passageDict.xml", chord);
-    const auto parameters = MeshingParameters::defaults(chord);
+  for (const std::string& name : bench::tutorialNames()) {
+    const bench::TutorialPassage tutorial = bench::loadTutorialPassage(name);
+    const BladeShape blade(tutorial.blade);
+    const auto& condition = tutorial.condition;
+    const auto parameters = MeshingParameters::defaults(tutorial.blade.chord);
     std::vector<double> seconds;
     HohMesh hoh;
     for (int r = 0; r < repetitions; ++r) {

@@ -15,11 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "passageMesh/blade/BladeFit.hpp"
-#include "passageMesh/blade/BladePoints.hpp"
+#include "TutorialPassage.hpp"
 #include "passageMesh/core/GnuplotRun.hpp"
 #include "passageMesh/core/ParallelFor.hpp"
-#include "passageMesh/core/PointFile.hpp"
 #include "passageMesh/mesh/HohMesh.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
 
@@ -33,11 +31,10 @@ int main(int argc, char** argv) {
   const std::string name = argv[1];
   const std::filesystem::path output = argv[2];
   const int threads = argc > 3 ? std::max(1, std::atoi(argv[3])) : 2;
-  const auto dir = std::filesystem::path(PASSAGEMESH_SOURCE_DIR) / "tutorials" / name;
-  const auto points = orderBladePoints(readPointFile(dir / "constant" / "bladePoints.dat")).points;
-  const BladeShape blade(fitBlade(points).parameters);
-  const double chord = blade.parameters().chord;
-  const auto condition = readPassageDict(dir / "system" / "passageDict.xml", chord);
+  const bench::TutorialPassage tutorial = bench::loadTutorialPassage(name);
+  const BladeShape blade(tutorial.blade);
+  const double chord = tutorial.blade.chord;
+  const auto& condition = tutorial.condition;
   const MeshingParameters defaults = MeshingParameters::defaults(chord);
   const auto lower = MeshingParameters::lowerBounds(chord), upper = MeshingParameters::upperBounds(chord);
   const auto& names = MeshingParameters::names();
