@@ -47,7 +47,9 @@ for blade in LS89 STD10 T106A SIRT; do
       runSeed "$seed" &
     done
     wait
-    bestSeed=$(for s in $(seq 1 "$seeds"); do echo "$(tail -n 1 "$work/$blade-$s.best") $s"; done | sort -g | tail -n 1 | cut -d' ' -f2)
+    bestSeed=$(for s in $(seq 1 "$seeds"); do
+        [ -s "$work/$blade-$s.best" ] && echo "$(tail -n 1 "$work/$blade-$s.best") $s"
+      done | sort -g | tail -n 1 | cut -d' ' -f2)
     cp "$work/$blade-$bestSeed.meshDict.xml" "$out/$blade-best-meshDict.xml" 2> /dev/null ||
       echo "iterOptimizeStudy.sh: warning: no meshDict.xml from $blade seed $bestSeed" >&2
     paste -d, $(for s in $(seq 1 "$seeds"); do echo "$work/$blade-$s.best"; done) |

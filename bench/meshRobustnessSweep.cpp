@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -70,20 +71,23 @@ int main(int argc, char** argv) {
   }
   // The draws with a passage (no periodic boundary through the blade: issue 11's
   // denominator, which counts an interface through the blade as a passage), by clearance.
-  const double edges[] = {0.0, 0.01, 0.02, 0.05, 0.1, 1e300};
+  // (Which draws have no passage is told by the problem's text: HohMesh.cpp,
+  // outerLoopCrossing.) Clearance <= 0: an interface cuts the blade.
+  const double edges[] = {-1e300, 0.0, 0.01, 0.02, 0.05, 0.1, 1e300};
+  const int bins = static_cast<int>(std::size(edges)) - 1;
   std::printf("draws with a passage, by clearance (chords): valid / all\n");
-  for (int b = 0; b < 5; ++b) {
-    int all = 0, ok = 0;
+  for (int b = 0; b < bins; ++b) {
+    int inBin = 0, ok = 0;
     for (int k = 0; k < draws; ++k) {
       const Outcome& o = outcomes[static_cast<std::size_t>(k)];
       if (o.problem.find("periodic boundary cuts the blade") != std::string::npos) continue;
-      const double c = std::max(o.clearance, 0.0);
-      if (c < edges[b] || c >= edges[b + 1]) continue;
-      ++all;
+      if (o.clearance <= edges[b] || o.clearance > edges[b + 1]) continue;
+      ++inBin;
       ok += o.valid;
     }
-    if (b < 4) std::printf("  [%.2f, %.2f): %d / %d\n", edges[b], edges[b + 1], ok, all);
-    else std::printf("  >= %.2f: %d / %d\n", edges[b], ok, all);
+    if (b == 0) std::printf("  <= 0 (an interface cuts the blade): %d / %d\n", ok, inBin);
+    else if (b + 1 < bins) std::printf("  (%.2f, %.2f]: %d / %d\n", edges[b], edges[b + 1], ok, inBin);
+    else std::printf("  > %.2f: %d / %d\n", edges[b], ok, inBin);
   }
   std::printf("valid %d of %d (%.1f %%); valid but not converged %d; non-finite %d; slowest "
               "%.2f s\n", valid, draws, 100.0 * valid / draws, notConverged, notFinite, slowest);

@@ -41,6 +41,7 @@ int main(int argc, char* argv[]) {
     double oneShot = -1, best = -1;
   };
   std::vector<Row> rows(static_cast<std::size_t>(count));
+  constexpr double atBound = 0.98;  // scaled units; tanh's slope there is under 4 %
   std::vector<int> atLower(policyActionSize, 0), atUpper(policyActionSize, 0);
   for (int i = 0; i < count; ++i) {
     const EpisodeTask task = environment.draw(seed, static_cast<std::uint64_t>(i));
@@ -51,8 +52,8 @@ int main(int argc, char* argv[]) {
       const PolicyAction a = policy->act(s);
       action.assign(a.begin(), a.end());
       for (int k = 0; k < policyActionSize; ++k) {
-        atLower[static_cast<std::size_t>(k)] += a[static_cast<std::size_t>(k)] <= -0.98;
-        atUpper[static_cast<std::size_t>(k)] += a[static_cast<std::size_t>(k)] >= 0.98;
+        atLower[static_cast<std::size_t>(k)] += a[static_cast<std::size_t>(k)] <= -atBound;
+        atUpper[static_cast<std::size_t>(k)] += a[static_cast<std::size_t>(k)] >= atBound;
       }
     }
     Row& row = rows[static_cast<std::size_t>(i)];
@@ -95,7 +96,7 @@ int main(int argc, char* argv[]) {
   std::printf("%s on %d passages of stream %llu: mean reward %.6f, median %.6f, %d valid\n", which.c_str(), count,
               static_cast<unsigned long long>(seed), oneShot.mean, oneShot.median, oneShot.valid);
   if (policy) {
-    std::printf("  actions at a bound (|a| >= 0.98) of %d passages:", count);
+    std::printf("  actions at a bound (|a| >= %.2f) of %d passages:", atBound, count);
     for (int k = 0; k < policyActionSize; ++k)
       std::printf(" %s %d low %d high%s", MeshingParameters::names()[static_cast<std::size_t>(k)].c_str(),
                   atLower[static_cast<std::size_t>(k)], atUpper[static_cast<std::size_t>(k)], k + 1 < policyActionSize ? ";" : "\n");

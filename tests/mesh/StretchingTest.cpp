@@ -1,9 +1,8 @@
-#include <algorithm>
-#include <cmath>
 #include "passageMesh/mesh/Stretching.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace passageMesh;

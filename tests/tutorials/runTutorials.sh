@@ -21,16 +21,16 @@ for blade in LS89 STD10 T106A SIRT; do
   fi
   # The exported polyMesh through OpenFOAM's checkMesh (skipped where OpenFOAM is absent).
   status=0
-  "$source/tests/tutorials/checkFoamMesh.sh" "$work/tutorials/$blade" > "$work/checkMesh.out" || status=$?
+  "$sourceDir/tests/tutorials/checkFoamMesh.sh" "$work/tutorials/$blade" > "$work/checkMesh.out" || status=$?
   if [ "$status" = 1 ]; then echo "$blade: checkMesh fails:"; cat "$work/checkMesh.out"; exit 1; fi
   sed "s/^/$blade: /" "$work/checkMesh.out" | grep -E "Mesh OK|skipped|cells:"
   # The Plot3D export read by OpenFOAM's plot3dToFoam: the same number of cells.
   status=0
-  "$source/tests/tutorials/checkPlot3dMesh.sh" "$work/tutorials/$blade" > "$work/plot3d.out" || status=$?
+  "$sourceDir/tests/tutorials/checkPlot3dMesh.sh" "$work/tutorials/$blade" > "$work/plot3d.out" || status=$?
   if [ "$status" = 1 ]; then echo "$blade: the Plot3D file does not read back:"; cat "$work/plot3d.out"; exit 1; fi
   sed "s/^/$blade: /" "$work/plot3d.out"
   grep -m1 "Q = " "$work/tutorials/$blade/log.checkMeshQuality" | sed "s/^/$blade: /"
   # The shipped policy still meshes the tutorial as recorded (issue 12).
-  "$source/tests/tutorials/checkShippedPolicy.sh" "$source" "$work/tutorials/$blade" "$blade" ||
+  "$sourceDir/tests/tutorials/checkShippedPolicy.sh" "$sourceDir" "$work/tutorials/$blade" "$blade" ||
     { echo "$blade: the shipped policy's one-shot Q changed (retrain, or record the new value)"; exit 1; }
 done

@@ -108,8 +108,9 @@ StructuredBlock hBlock(const std::string& name, double xBegin, double xEnd, bool
 // or trailing edge (betaIn xIn or betaOut xOut near 0) cuts the rounded edge. Then no
 // mesh exists, and saying so here is clearer (and cheaper) than the folded cells or the
 // diverging smoother it would otherwise end in.
-std::string outerLoopCrossing(const PassageBoundary& boundary, const std::vector<BladeNode>& wall) {
-  auto at = [](double v) {
+std::string outerLoopCrossing(const BladeShape& blade, const PassageBoundary& boundary,
+                              const std::vector<BladeNode>& wall) {
+  auto metres = [](double v) {
     char text[64];
     std::snprintf(text, sizeof text, "%.6g m", v);
     return std::string(text);
@@ -122,18 +123,21 @@ std::string outerLoopCrossing(const PassageBoundary& boundary, const std::vector
     const bool below = y <= boundary.lowerY(x), above = y >= boundary.upperY(x);
     if (below || above)
       return std::string("the ") + (below ? "lower" : "upper") +
-             " periodic boundary cuts the blade at x = " + at(x) +
+             " periodic boundary cuts the blade at x = " + metres(x) +
              " (yIn, yOut or alphaCamber too far from the camber line for this pitch)";
   }
-  for (const auto& node : wall) {
-    const double x = node.point.x(), y = node.point.y();
-    if (x <= boundary.inletInterfaceX())
-      return "the inlet interface (x = " + at(boundary.inletInterfaceX()) +
-             ") cuts the blade at y = " + at(y) + " (betaIn xIn too small)";
-    if (x >= boundary.outletInterfaceX())
-      return "the outlet interface (x = " + at(boundary.outletInterfaceX()) +
-             ") cuts the blade at y = " + at(y) + " (betaOut xOut too small)";
-  }
+  // The interfaces against the profile itself (400 points a side), not the wall nodes: with
+  // few nodes an interface could pass between two of them through the rounded edge.
+  for (BladeSide side : {BladeSide::lower, BladeSide::upper})
+    for (double u : blade.sideParameters(400)) {
+      const Eigen::Vector2d p = blade.point(side, u);
+      if (p.x() <= boundary.inletInterfaceX())
+        return "the inlet interface (x = " + metres(boundary.inletInterfaceX()) +
+               ") cuts the blade at y = " + metres(p.y()) + " (betaIn xIn too small)";
+      if (p.x() >= boundary.outletInterfaceX())
+        return "the outlet interface (x = " + metres(boundary.outletInterfaceX()) +
+               ") cuts the blade at y = " + metres(p.y()) + " (betaOut xOut too small)";
+    }
   return "";
 }
 
@@ -148,7 +152,7 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
   const PassageBoundary boundary(blade, condition, parameters);
 
   const auto wall = distributeBladeNodes(blade, nT, parameters.gammaLe, parameters.gammaTe);
-  result.problem = outerLoopCrossing(boundary, wall);
+  result.problem = outerLoopCrossing(blade, boundary, wall);
   if (!result.problem.empty()) return result;
   int lowerIntervals = 0;
   while (wall[static_cast<std::size_t>(lowerIntervals)].side == BladeSide::lower) ++lowerIntervals;

@@ -1,5 +1,6 @@
 #include "passageMesh/mesh/Stretching.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -72,13 +73,13 @@ void moveLastSpacing(std::vector<double>& s, double lastSpacing) {
   };
   const double wanted = (lastSpacing - (s[last] - s[last - 1])) / (h * std::pow(1 - h, 8));
   // The largest |c| of that sign for which no spacing falls below half of what it was:
-  // s_j - s_{j-1} + c (f_j - f_{j-1}) >= (s_j - s_{j-1}) / 2. Clipping c there (rather than
-  // halving it until the spacings pass, as before 2026-12-02) keeps the nodes continuous
-  // in lastSpacing and in the line length, and so Q continuous in the meshing parameters.
+  // s_j - s_{j-1} + c (f_j - f_{j-1}) >= (s_j - s_{j-1}) / 2. Clipping c there keeps the
+  // nodes continuous in lastSpacing and in the line length, and so Q continuous in the
+  // meshing parameters (halving c until the spacings passed made whole lines jump).
   double limit = std::abs(wanted);
   for (int j = 1; j <= last; ++j) {
     const double change = wanted >= 0 ? f(j) - f(j - 1) : f(j - 1) - f(j);  // per unit |c|
-    if (change < 0) limit = std::min(limit, 0.5 * (s[j] - s[j - 1]) / -change);
+    if (change < 0) limit = std::min(limit, std::max(0.0, 0.5 * (s[j] - s[j - 1]) / -change));
   }
   const double c = std::copysign(limit, wanted);
   for (int j = 1; j < last; ++j) s[j] += c * f(j);

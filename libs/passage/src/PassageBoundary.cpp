@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace passageMesh {
@@ -23,30 +24,20 @@ PassageBoundary::Fillet PassageBoundary::filletAt(double xKink, double halfWidth
   Fillet f;
   if (!(halfWidth > 0)) return f;
   f.x0 = xKink - halfWidth;
-  f.x2 = xKink + halfWidth;
+  f.x1 = xKink + halfWidth;
   f.y0 = pieceY(f.x0);
-  f.y2 = pieceY(f.x2);
+  f.y1 = pieceY(f.x1);
   // One-sided slopes, each inside its own piece.
   const double h = 1e-4 * halfWidth;
-  const double m0 = (f.y0 - pieceY(f.x0 - h)) / h, m2 = (pieceY(f.x2 + h) - f.y2) / h;
-  f.x1 = xKink;  // no kink (or tangents that meet outside the window): the midpoint
-  f.y1 = pieceY(xKink);
-  if (std::abs(m0 - m2) > 1e-9) {
-    const double x1 = (f.y2 - f.y0 + m0 * f.x0 - m2 * f.x2) / (m0 - m2);
-    if (x1 > f.x0 + 0.05 * halfWidth && x1 < f.x2 - 0.05 * halfWidth) {
-      f.x1 = x1;
-      f.y1 = f.y0 + m0 * (x1 - f.x0);
-    }
-  }
+  f.slope0 = (f.y0 - pieceY(f.x0 - h)) / h;
+  f.slope1 = (pieceY(f.x1 + h) - f.y1) / h;
   return f;
 }
 
 double PassageBoundary::Fillet::y(double x) const {
-  // x(t) = x0 + b t + a t^2 with b = 2 (x1 - x0) > 0: the root in [0, 1], in the form
-  // that stays accurate as a -> 0.
-  const double a = x0 - 2 * x1 + x2, b = 2 * (x1 - x0), dx = x - x0;
-  const double t = 2 * dx / (b + std::sqrt(std::max(0.0, b * b + 4 * a * dx)));
-  return (1 - t) * (1 - t) * y0 + 2 * t * (1 - t) * y1 + t * t * y2;
+  const double w = x1 - x0, t = (x - x0) / w, t2 = t * t, t3 = t2 * t;
+  return (2 * t3 - 3 * t2 + 1) * y0 + (t3 - 2 * t2 + t) * w * slope0 + (-2 * t3 + 3 * t2) * y1 +
+         (t3 - t2) * w * slope1;
 }
 
 double PassageBoundary::lowerY(double x) const {
@@ -101,14 +92,14 @@ double bladeClearance(const BladeShape& blade, const PassageBoundary& boundary) 
     loop.emplace_back(x, boundary.upperY(x));
   }
   loop.push_back(loop.front());
-  double clearance = INFINITY;
+  double clearance = std::numeric_limits<double>::infinity();
   for (BladeSide side : {BladeSide::lower, BladeSide::upper})
     for (double u : blade.sideParameters(samples)) {
       const Eigen::Vector2d p = blade.point(side, u);
       // A blade point beyond an interface or beyond a periodic boundary is outside the loop.
       const bool inside = p.x() > xA && p.x() < xB && p.y() > boundary.lowerY(p.x()) &&
                           p.y() < boundary.upperY(p.x());
-      double nearest = INFINITY;
+      double nearest = std::numeric_limits<double>::infinity();
       for (std::size_t k = 0; k + 1 < loop.size(); ++k)
         nearest = std::min(nearest, segmentDistance(p, loop[k], loop[k + 1]));
       clearance = std::min(clearance, inside ? nearest : -nearest);

@@ -20,9 +20,10 @@
 // where the flat parts meet the camber-following part. At each kink, where it opens into
 // the O-block, the grid lines reach the boundary at a grazing angle: the worst cells of the
 // tutorials and many folds of the robustness sweep sat there (docs/elliptic-smoothing.md).
-// Each kink is therefore replaced by a quadratic Bezier fillet from x_k - d to x_k + d.
-// Its control points are the curve's points at the window ends and the intersection of
-// the tangents there, so the boundary stays C1 and the fillet lies on the concave side.
+// Each kink is therefore replaced by a fillet from x_k - d to x_k + d: the cubic Hermite
+// curve with the paper's values and slopes at both window ends. The boundary is C1 and
+// moves continuously with the parameters. Where the pieces are straight, the fillet is
+// the parabola tangent to both, on the concave side of the kink.
 // d = min(0.2 chord, half the distance from the edge to its interface, a quarter of the
 // axial chord). So the boundary stays flat at the interfaces, where the corners of the
 // outer loop stay at 90 degrees.
@@ -49,11 +50,11 @@ class PassageBoundary {
   double upperY(double x) const { return lowerY(x) + condition_.pitch; }
 
  private:
-  // A quadratic Bezier arc y(x) over [x0, x2] with control points (x0, y0), (x1, y1),
-  // (x2, y2), x0 < x1 < x2 (so x(t) is monotone); empty when x0 == x2.
+  // The cubic Hermite y(x) over [x0, x1] with values y0, y1 and slopes slope0, slope1 at
+  // its ends; empty when x0 == x1.
   struct Fillet {
-    double x0 = 0, x1 = 0, x2 = 0, y0 = 0, y1 = 0, y2 = 0;
-    bool covers(double x) const { return x2 > x0 && x > x0 && x < x2; }
+    double x0 = 0, x1 = 0, y0 = 0, y1 = 0, slope0 = 0, slope1 = 0;
+    bool covers(double x) const { return x1 > x0 && x > x0 && x < x1; }
     double y(double x) const;
   };
   double pieceY(double x) const;  // the paper's curve, kinks included
@@ -70,7 +71,8 @@ class PassageBoundary {
 // outlet interfaces and the periodic boundaries between them): how much room the O-block
 // has. Zero or below when the loop touches or cuts the blade (then no mesh exists); a few
 // per cent of the chord make a mesh very hard (docs/benchmarks.md, robustness sweep).
-// Blade and loop sampled at 400 points a side and a piece: accurate to about 1e-4 chord.
+// Blade and loop sampled at 400 points a side and a piece: the error is below the
+// distance between neighbouring loop samples.
 double bladeClearance(const BladeShape& blade, const PassageBoundary& boundary);
 
 }  // namespace passageMesh
