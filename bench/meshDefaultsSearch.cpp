@@ -40,11 +40,14 @@ MeshingParameters forChord(const Eigen::VectorXd& v, double chord) {
   return p;
 }
 
-std::vector<double> qualities(const std::vector<PassageDraw>& passages, const Eigen::VectorXd& v,
+// Q of each passage (a PassageDraw or a bench::TutorialPassage: anything with a blade and a
+// condition) meshed with the set; invalidMeshQuality where the mesh is invalid.
+template <class Passage>
+std::vector<double> qualities(const std::vector<Passage>& passages, const Eigen::VectorXd& v,
                               int threads) {
   std::vector<double> q(passages.size());
   parallelFor(static_cast<int>(passages.size()), threads, [&](int k) {
-    const PassageDraw& d = passages[static_cast<std::size_t>(k)];
+    const Passage& d = passages[static_cast<std::size_t>(k)];
     const HohMesh hoh = buildHohMesh(BladeShape(d.blade), d.condition, forChord(v, d.blade.chord));
     q[static_cast<std::size_t>(k)] = hoh.valid ? computeMeshQuality(hoh.mesh).Q : invalidMeshQuality;
   });
@@ -74,18 +77,6 @@ void printParameters(const char* label, const Eigen::VectorXd& v) {
   for (int k = 0; k < MeshingParameters::size; ++k)
     std::printf(" %s %.6g%s", names[k].c_str(), values[static_cast<std::size_t>(k)], MeshingParameters::table()[k].length ? "c" : "");
   std::printf("\n");
-}
-
-// Q of each tutorial meshed with the set (invalidMeshQuality where the mesh is invalid).
-std::vector<double> tutorialQualities(const std::vector<bench::TutorialPassage>& tutorials,
-                                      const Eigen::VectorXd& v, int threads) {
-  std::vector<double> q(tutorials.size());
-  parallelFor(static_cast<int>(tutorials.size()), threads, [&](int k) {
-    const bench::TutorialPassage& t = tutorials[static_cast<std::size_t>(k)];
-    const HohMesh hoh = buildHohMesh(BladeShape(t.blade), t.condition, forChord(v, t.blade.chord));
-    q[static_cast<std::size_t>(k)] = hoh.valid ? computeMeshQuality(hoh.mesh).Q : invalidMeshQuality;
-  });
-  return q;
 }
 
 }  // namespace
@@ -121,7 +112,7 @@ int main(int argc, char** argv) {
   const BatchObjective objective = [&](const std::vector<Eigen::VectorXd>& points) {
     std::vector<double> values;
     for (const auto& v : points) {
-      const auto tq = keepTutorialsValid ? tutorialQualities(tutorials, v, threads) : std::vector<double>{};
+      const auto tq = keepTutorialsValid ? qualities(tutorials, v, threads) : std::vector<double>{};
       const bool tutorialInvalid = std::any_of(tq.begin(), tq.end(), [](double q) { return q <= invalidMeshQuality; });
       values.push_back(tutorialInvalid ? invalidMeshQuality : quantile(qualities(passages, v, threads), 0.5));
     }
@@ -132,7 +123,7 @@ int main(int argc, char** argv) {
   printParameters("best", result.best);
   std::printf("best median Q over the search passages (seed %llu): %.6f\n",
               static_cast<unsigned long long>(seed), result.bestValue);
-  const auto before = tutorialQualities(tutorials, defaults, threads), after = tutorialQualities(tutorials, result.best, threads);
+  const auto before = qualities(tutorials, defaults, threads), after = qualities(tutorials, result.best, threads);
   std::printf("\ntutorials (Q, -1 invalid): | blade | current defaults | best of the search |\n");
   for (std::size_t k = 0; k < tutorials.size(); ++k)
     std::printf("| %s | %.4f | %.4f |\n", tutorials[k].name.c_str(), before[k], after[k]);

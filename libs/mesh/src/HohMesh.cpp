@@ -126,18 +126,16 @@ std::string outerLoopCrossing(const BladeShape& blade, const PassageBoundary& bo
              " periodic boundary cuts the blade at x = " + metres(x) +
              " (yIn, yOut or alphaCamber too far from the camber line for this pitch)";
   }
-  // The interfaces against the profile itself (400 points a side), not the wall nodes: with
-  // few nodes an interface could pass between two of them through the rounded edge.
-  for (BladeSide side : {BladeSide::lower, BladeSide::upper})
-    for (double u : blade.sideParameters(400)) {
-      const Eigen::Vector2d p = blade.point(side, u);
-      if (p.x() <= boundary.inletInterfaceX())
-        return "the inlet interface (x = " + metres(boundary.inletInterfaceX()) +
-               ") cuts the blade at y = " + metres(p.y()) + " (betaIn xIn too small)";
-      if (p.x() >= boundary.outletInterfaceX())
-        return "the outlet interface (x = " + metres(boundary.outletInterfaceX()) +
-               ") cuts the blade at y = " + metres(p.y()) + " (betaOut xOut too small)";
-    }
+  // The interfaces against the profile itself (800 points), not the wall nodes: with few
+  // nodes an interface could pass between two of them through the rounded edge.
+  for (const Eigen::Vector2d& p : blade.sampleLoop(800)) {
+    if (p.x() <= boundary.inletInterfaceX())
+      return "the inlet interface (x = " + metres(boundary.inletInterfaceX()) +
+             ") cuts the blade at y = " + metres(p.y()) + " (betaIn xIn too small)";
+    if (p.x() >= boundary.outletInterfaceX())
+      return "the outlet interface (x = " + metres(boundary.outletInterfaceX()) +
+             ") cuts the blade at y = " + metres(p.y()) + " (betaOut xOut too small)";
+  }
   return "";
 }
 

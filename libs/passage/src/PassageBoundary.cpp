@@ -93,17 +93,15 @@ double bladeClearance(const BladeShape& blade, const PassageBoundary& boundary) 
   }
   loop.push_back(loop.front());
   double clearance = std::numeric_limits<double>::infinity();
-  for (BladeSide side : {BladeSide::lower, BladeSide::upper})
-    for (double u : blade.sideParameters(samples)) {
-      const Eigen::Vector2d p = blade.point(side, u);
-      // A blade point beyond an interface or beyond a periodic boundary is outside the loop.
-      const bool inside = p.x() > xA && p.x() < xB && p.y() > boundary.lowerY(p.x()) &&
-                          p.y() < boundary.upperY(p.x());
-      double nearest = std::numeric_limits<double>::infinity();
-      for (std::size_t k = 0; k + 1 < loop.size(); ++k)
-        nearest = std::min(nearest, segmentDistance(p, loop[k], loop[k + 1]));
-      clearance = std::min(clearance, inside ? nearest : -nearest);
-    }
+  for (const Eigen::Vector2d& p : blade.sampleLoop(2 * samples)) {
+    // A blade point beyond an interface or beyond a periodic boundary is outside the loop.
+    const bool inside = p.x() > xA && p.x() < xB && p.y() > boundary.lowerY(p.x()) &&
+                        p.y() < boundary.upperY(p.x());
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k + 1 < loop.size(); ++k)
+      nearest = std::min(nearest, segmentDistance(p, loop[k], loop[k + 1]));
+    clearance = std::min(clearance, inside ? nearest : -nearest);
+  }
   return clearance;
 }
 
