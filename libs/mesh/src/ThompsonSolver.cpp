@@ -70,68 +70,19 @@ class Grid {
   const GridControl& control_;
 };
 
-// Solves the tridiagonal system lower[k] u[k-1] + diagonal[k] u[k] + upper[k] u[k+1] =
-// r[k], k in [0, m), for two right-hand sides at once (Thomas algorithm; the arrays are
-// overwritten, the solution is left in rx, ry). Diagonally dominant here, no pivoting.
-void solveTridiagonal(int m, double* lower, double* diagonal, double* upper, double* rx,
-                      double* ry) {
-  for (int k = 1; k < m; ++k) {
-    const double f = lower[k] / diagonal[k - 1];
-    diagonal[k] -= f * upper[k - 1];
-    rx[k] -= f * rx[k - 1];
-    ry[k] -= f * ry[k - 1];
-  }
-  rx[m - 1] /= diagonal[m - 1];
-  ry[m - 1] /= diagonal[m - 1];
-  for (int k = m - 2; k >= 0; --k) {
-    rx[k] = (rx[k] - upper[k] * rx[k + 1]) / diagonal[k];
-    ry[k] = (ry[k] - upper[k] * ry[k + 1]) / diagonal[k];
-  }
-}
-
-// The cyclic system (lower[0] couples u[0] to u[m-1], upper[m-1] couples u[m-1] to u[0]),
-// by the Sherman-Morrison formula over one extra tridiagonal solve.
-void solveCyclicTridiagonal(int m, std::vector<double>& lower, std::vector<double>& diagonal,
-                            std::vector<double>& upper, std::vector<double>& rx,
-                            std::vector<double>& ry, std::vector<double>& work) {
-  const double cornerLow = lower[0], cornerHigh = upper[m - 1];
-  const double g = -diagonal[0];
-  diagonal[0] -= g;
-  diagonal[m - 1] -= cornerHigh * cornerLow / g;
-  // u = A'^{-1} [g, 0, ..., cornerHigh]; the same factorisation serves both solves, so
-  // solve with three right-hand sides: rx, ry and the correction vector.
-  work.assign(static_cast<std::size_t>(m), 0.0);
-  work[0] = g;
-  work[static_cast<std::size_t>(m - 1)] = cornerHigh;
-  for (int k = 1; k < m; ++k) {
-    const double f = lower[k] / diagonal[k - 1];
-    diagonal[k] -= f * upper[k - 1];
-    rx[k] -= f * rx[k - 1];
-    ry[k] -= f * ry[k - 1];
-    work[k] -= f * work[k - 1];
-  }
-  for (auto* v : {&rx, &ry, &work}) {
-    auto& u = *v;
-    u[m - 1] /= diagonal[m - 1];
-    for (int k = m - 2; k >= 0; --k) u[k] = (u[k] - upper[k] * u[k + 1]) / diagonal[k];
-  }
-  const double vCorrection = work[0] + cornerLow / g * work[m - 1];
-  const double fx = (rx[0] + cornerLow / g * rx[m - 1]) / (1 + vCorrection);
-  const double fy = (ry[0] + cornerLow / g * ry[m - 1]) / (1 + vCorrection);
-  for (int k = 0; k < m; ++k) {
-    rx[k] -= fx * work[k];
-    ry[k] -= fy * work[k];
-  }
-}
-
+// The line solves below assemble each node's coefficients and eliminate it in the same
+// loop (Thomas algorithm, forward elimination with the reciprocal of the pivot kept, then
+// back substitution): the elimination is a chain of dependent divisions, and assembling
+// the next node's coefficients in the same loop gives the processor independent work to
+// overlap with it. Diagonally dominant here, no pivoting.
 class LineSweeps {
  public:
   LineSweeps(StructuredBlock& block, const GridControl& control, const MovingRows& rows,
              double relaxation)
-      : block_(block), grid_(block, control), first_(rows.first()), last_(rows.last(block)),
-        omega_(relaxation) {
+      : block_(block), grid_(block, control), control_(control), first_(rows.first()),
+        last_(rows.last(block)), omega_(relaxation) {
     const std::size_t size = static_cast<std::size_t>(std::max(block.ni, block.nj));
-    for (auto* v : {&lower_, &diagonal_, &upper_, &rx_, &ry_}) v->resize(size);
+    for (auto* v : {&pivotUpper_, &solutionX_, &solutionY_, &correction_}) v->resize(size);
   }
 
   // Tridiagonal solves along each j-line, i = 0 .. n-1 in turn.
@@ -139,54 +90,97 @@ class LineSweeps {
     const int m = last_ - first_ + 1;
     for (int i = 0; i < grid_.n(); ++i) {
       const int e = grid_.east(i), w = grid_.west(i);
-      for (int j = first_; j <= last_; ++j) {
+      double previousX = 0, previousY = 0, previousUpper = 0;
+      for (int k = 0; k < m; ++k) {
+        const int j = first_ + k;
         const NodeTerms t = grid_.terms(i, j);
-        const double p = grid_.phi(i, j), q = grid_.psi(i, j);
-        const int k = j - first_;
-        lower_[k] = t.gamma * (1 - 0.5 * q);
-        upper_[k] = t.gamma * (1 + 0.5 * q);
-        diagonal_[k] = -2 * (t.alpha + t.gamma);
+        const double p = value(control_.phi, i, j), q = value(control_.psi, i, j);
+        const double lower = t.gamma * (1 - 0.5 * q), upper = t.gamma * (1 + 0.5 * q);
         const double aE = t.alpha * (1 + 0.5 * p), aW = t.alpha * (1 - 0.5 * p);
-        rx_[k] = grid_.forceX(i, j) - (aE * grid_.x(e, j) + aW * grid_.x(w, j) + t.crossX);
-        ry_[k] = grid_.forceY(i, j) - (aE * grid_.y(e, j) + aW * grid_.y(w, j) + t.crossY);
+        double rx = value(control_.forceX, i, j) - (aE * grid_.x(e, j) + aW * grid_.x(w, j) + t.crossX);
+        double ry = value(control_.forceY, i, j) - (aE * grid_.y(e, j) + aW * grid_.y(w, j) + t.crossY);
+        if (k == 0) {
+          rx -= lower * grid_.x(i, first_ - 1);
+          ry -= lower * grid_.y(i, first_ - 1);
+        }
+        if (k == m - 1) {
+          rx -= upper * grid_.x(i, last_ + 1);
+          ry -= upper * grid_.y(i, last_ + 1);
+        }
+        const double pivot = 1 / (-2 * (t.alpha + t.gamma) - lower * previousUpper);
+        previousUpper = pivotUpper_[k] = upper * pivot;
+        previousX = solutionX_[k] = (rx - lower * previousX) * pivot;
+        previousY = solutionY_[k] = (ry - lower * previousY) * pivot;
       }
-      rx_[0] -= lower_[0] * grid_.x(i, first_ - 1);
-      ry_[0] -= lower_[0] * grid_.y(i, first_ - 1);
-      rx_[m - 1] -= upper_[m - 1] * grid_.x(i, last_ + 1);
-      ry_[m - 1] -= upper_[m - 1] * grid_.y(i, last_ + 1);
-      solveTridiagonal(m, lower_.data(), diagonal_.data(), upper_.data(), rx_.data(), ry_.data());
-      for (int j = first_; j <= last_; ++j) {
-        grid_.x(i, j) += omega_ * (rx_[j - first_] - grid_.x(i, j));
-        grid_.y(i, j) += omega_ * (ry_[j - first_] - grid_.y(i, j));
+      backSubstitute(m);
+      for (int k = 0; k < m; ++k) {
+        grid_.x(i, first_ + k) += omega_ * (solutionX_[k] - grid_.x(i, first_ + k));
+        grid_.y(i, first_ + k) += omega_ * (solutionY_[k] - grid_.y(i, first_ + k));
       }
     }
     copySeam();
   }
 
-  // Cyclic tridiagonal solves around each j = const loop, from the wall outwards.
+  // Cyclic tridiagonal solves around each j = const loop, from the wall outwards: the
+  // Sherman-Morrison formula over the tridiagonal system with the corner couplings
+  // (node 0 to node n-1 and back) taken out, solved for a third right-hand side, the
+  // correction vector, with the same elimination.
   void iLines() {
     const int n = grid_.n();
     for (int j = first_; j <= last_; ++j) {
+      double previousX = 0, previousY = 0, previousCorrection = 0, previousUpper = 0;
+      double cornerLow = 0, g = 0;
       for (int i = 0; i < n; ++i) {
         const NodeTerms t = grid_.terms(i, j);
-        const double p = grid_.phi(i, j), q = grid_.psi(i, j);
-        lower_[i] = t.alpha * (1 - 0.5 * p);
-        upper_[i] = t.alpha * (1 + 0.5 * p);
-        diagonal_[i] = -2 * (t.alpha + t.gamma);
+        const double p = value(control_.phi, i, j), q = value(control_.psi, i, j);
+        const double lower = t.alpha * (1 - 0.5 * p), upper = t.alpha * (1 + 0.5 * p);
+        double diagonal = -2 * (t.alpha + t.gamma);
         const double gN = t.gamma * (1 + 0.5 * q), gS = t.gamma * (1 - 0.5 * q);
-        rx_[i] = grid_.forceX(i, j) - (gN * grid_.x(i, j + 1) + gS * grid_.x(i, j - 1) + t.crossX);
-        ry_[i] = grid_.forceY(i, j) - (gN * grid_.y(i, j + 1) + gS * grid_.y(i, j - 1) + t.crossY);
+        const double rx = value(control_.forceX, i, j) - (gN * grid_.x(i, j + 1) + gS * grid_.x(i, j - 1) + t.crossX);
+        const double ry = value(control_.forceY, i, j) - (gN * grid_.y(i, j + 1) + gS * grid_.y(i, j - 1) + t.crossY);
+        double correction = 0;
+        if (i == 0) {
+          cornerLow = lower;
+          g = -diagonal;
+          diagonal -= g;
+          correction = g;
+        }
+        if (i == n - 1) {  // upper is the corner coupling to node 0
+          diagonal -= upper * cornerLow / g;
+          correction = upper;
+        }
+        // (at i = 0 the previous values are 0: cornerLow couples through the correction)
+        const double pivot = 1 / (diagonal - lower * previousUpper);
+        previousUpper = pivotUpper_[i] = upper * pivot;
+        previousX = solutionX_[i] = (rx - lower * previousX) * pivot;
+        previousY = solutionY_[i] = (ry - lower * previousY) * pivot;
+        previousCorrection = correction_[i] = (correction - lower * previousCorrection) * pivot;
       }
-      solveCyclicTridiagonal(n, lower_, diagonal_, upper_, rx_, ry_, work_);
+      backSubstitute(n, true);
+      const double vCorrection = correction_[0] + cornerLow / g * correction_[n - 1];
+      const double fx = (solutionX_[0] + cornerLow / g * solutionX_[n - 1]) / (1 + vCorrection);
+      const double fy = (solutionY_[0] + cornerLow / g * solutionY_[n - 1]) / (1 + vCorrection);
       for (int i = 0; i < n; ++i) {
-        grid_.x(i, j) += omega_ * (rx_[i] - grid_.x(i, j));
-        grid_.y(i, j) += omega_ * (ry_[i] - grid_.y(i, j));
+        grid_.x(i, j) += omega_ * (solutionX_[i] - fx * correction_[i] - grid_.x(i, j));
+        grid_.y(i, j) += omega_ * (solutionY_[i] - fy * correction_[i] - grid_.y(i, j));
       }
     }
     copySeam();
   }
 
  private:
+  double value(const std::vector<double>& v, int i, int j) const {
+    return v.empty() ? 0.0 : v[static_cast<std::size_t>(i + grid_.n() * j)];
+  }
+
+  void backSubstitute(int m, bool withCorrection = false) {
+    for (int k = m - 2; k >= 0; --k) {
+      solutionX_[k] -= pivotUpper_[k] * solutionX_[k + 1];
+      solutionY_[k] -= pivotUpper_[k] * solutionY_[k + 1];
+      if (withCorrection) correction_[k] -= pivotUpper_[k] * correction_[k + 1];
+    }
+  }
+
   void copySeam() {
     const int n = grid_.n();
     for (int j = first_; j <= last_; ++j) {
@@ -197,9 +191,11 @@ class LineSweeps {
 
   StructuredBlock& block_;
   Grid grid_;
+  const GridControl& control_;
   int first_, last_;
   double omega_;
-  std::vector<double> lower_, diagonal_, upper_, rx_, ry_, work_;
+  // Per node of the line: upper / pivot, then the solutions (x, y and the correction).
+  std::vector<double> pivotUpper_, solutionX_, solutionY_, correction_;
 };
 
 void checkSizes(const StructuredBlock& o, const GridControl& control, const MovingRows& rows) {
