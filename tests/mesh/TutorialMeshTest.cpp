@@ -75,6 +75,37 @@ TEST_P(TutorialMesh, DefaultParametersGiveAValidSmoothMesh) {
               q.QJavg, q.QSmin, q.QSavg, q.Q);
 }
 
+// Issue 11's validity must-show: at the defaults, every pitch of the method's range and
+// nO across it, wherever the periodic boundaries leave the blade a passage. LS89 at 0.75
+// chord and T106A at 0.3 fold with the outer loop's orthogonality control and are meshed
+// by the second try without it (HohMeshOptions::secondTryWithoutOuterOrthogonality).
+TEST_P(TutorialMesh, DefaultParametersAreValidAtEveryPitchAndNodeCount) {
+  const std::string name = GetParam();
+  const auto points = orderBladePoints(readPointFile(testData::tutorialPoints(name))).points;
+  const BladeShape blade(fitBlade(points).parameters);
+  const double chord = blade.parameters().chord;
+  const auto caseDir = testData::tutorialPoints(name).parent_path().parent_path();
+  const PassageCondition paper = readPassageDict(caseDir / "system" / "passageDict.xml", chord);
+  const MeshingParameters parameters = MeshingParameters::defaults(chord);
+  int meshed = 0, secondTries = 0;
+  for (double pitch : {0.3, 0.5, 0.75, 1.0})
+    for (int nO : {10000, 30000, 50000}) {
+      PassageCondition condition = paper;
+      condition.pitch = pitch * chord;
+      condition.nO = nO;
+      const HohMesh hoh = buildHohMesh(blade, condition, parameters);
+      if (hoh.problem.find("periodic boundary cuts the blade") != std::string::npos) continue;
+      EXPECT_TRUE(hoh.valid) << name << " at pitch " << pitch << " chord, nO " << nO << ": " << hoh.problem;
+      if (!hoh.valid) continue;
+      ++meshed;
+      secondTries += !hoh.firstTryProblem.empty();
+      expectExactPeriodicImages(hoh.mesh, chord);
+      EXPECT_TRUE(computeMeshQuality(hoh.mesh).valid);
+    }
+  std::printf("%s: %d pitch / nO combinations meshed, %d by the second try\n", name.c_str(),
+              meshed, secondTries);
+}
+
 INSTANTIATE_TEST_SUITE_P(Tutorials, TutorialMesh,
                          ::testing::Values("LS89", "STD10", "T106A", "SIRT"),
                          [](const auto& test) { return test.param; });

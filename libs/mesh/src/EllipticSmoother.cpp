@@ -63,8 +63,12 @@ struct Controls {
   // With wall orthogonality: Sorenson's values at the wall, blended like the outer ones.
   bool wallOrthogonal = false;
   std::vector<double> wallSpacing, wallPsi;
+  // Without outer orthogonality the outer values are zero and stay so (no pull on the
+  // lines at the outer loop: they arrive at the angle the interior gives them).
+  bool outerOrthogonal = true;
 
-  Controls(const StructuredBlock& o, bool orthogonalWall) : wallOrthogonal(orthogonalWall) {
+  Controls(const StructuredBlock& o, bool orthogonalWall, bool orthogonalOuter)
+      : wallOrthogonal(orthogonalWall), outerOrthogonal(orthogonalOuter) {
     const int n = o.ni - 1, J = o.nj - 1;
     wallPhi = loopDistributionControl(o, 0);
     linePsi.assign(static_cast<std::size_t>(n) * o.nj, 0.0);
@@ -78,6 +82,10 @@ struct Controls {
     for (int i = 0; i < n; ++i) {
       outerSpacing[static_cast<std::size_t>(i)] = distance(o, i, J - 1, i, J);
       outerPsi[static_cast<std::size_t>(i)] = linePsi[static_cast<std::size_t>(i + n * (J - 1))];
+    }
+    if (!outerOrthogonal) {
+      outerPhi.assign(outerPhi.size(), 0.0);
+      outerPsi.assign(outerPsi.size(), 0.0);
     }
     if (wallOrthogonal) {
       wallSpacing.resize(static_cast<std::size_t>(n));
@@ -117,9 +125,11 @@ ControlUpdate outerControlUpdate(Controls& c, double relax, double limit) {
       auto relaxed = [&](double& value, double target) {
         if (std::isfinite(target)) value = std::clamp(value + relax * (target - value), -limit, limit);
       };
-      boundaryControl(grid, i, grid.nj - 1, c.outerSpacing[k], phi, psi);
-      relaxed(c.outerPhi[k], phi);
-      relaxed(c.outerPsi[k], psi);
+      if (c.outerOrthogonal) {
+        boundaryControl(grid, i, grid.nj - 1, c.outerSpacing[k], phi, psi);
+        relaxed(c.outerPhi[k], phi);
+        relaxed(c.outerPsi[k], psi);
+      }
       if (!c.wallOrthogonal) continue;
       boundaryControl(grid, i, 0, c.wallSpacing[k], phi, psi);
       relaxed(c.wallPhi[k], phi);
@@ -165,7 +175,7 @@ int outerControlFromCoarseGrid(StructuredBlock& o, Controls& fine, const Ellipti
     initial.push_back(coarseBlock(initial.back(), c));
   }
   StructuredBlock coarsest = initial.back();
-  Controls controls(coarsest, options.wallOrthogonality);
+  Controls controls(coarsest, options.wallOrthogonality, options.outerOrthogonality);
   const ThompsonReport r = solveWithOuterControl(coarsest, controls, options,
                                                  options.controlMaxSweeps, options.controlTolerance);
   if (!std::isfinite(r.residual)) return r.sweeps;
@@ -208,7 +218,7 @@ int outerControlFromCoarseGrid(StructuredBlock& o, Controls& fine, const Ellipti
 
 EllipticReport smoothOBlock(StructuredBlock& o, const EllipticOptions& options) {
   if (o.ni - 1 < 3 || o.nj < 4) throw std::invalid_argument("smoothOBlock: block too small");
-  Controls controls(o, options.wallOrthogonality);  // from the algebraic grid, before anything moves
+  Controls controls(o, options.wallOrthogonality, options.outerOrthogonality);  // from the algebraic grid, before anything moves
   EllipticReport report;
   if (!options.multigrid) {
     const ThompsonReport r =

@@ -139,30 +139,12 @@ std::string outerLoopCrossing(const BladeShape& blade, const PassageBoundary& bo
   return "";
 }
 
-}  // namespace
-
-HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
-                     const MeshingParameters& parameters, const HohMeshOptions& options) {
-  const int nT = parameters.nT;
-  if (nT < 8) throw std::invalid_argument("buildHohMesh: nT must be at least 8");
-  HohMesh result;
-  result.nN = std::max(2, static_cast<int>(std::lround(static_cast<double>(condition.nO) / nT)));
-  const PassageBoundary boundary(blade, condition, parameters);
-
-  const auto wall = distributeBladeNodes(blade, nT, parameters.gammaLe, parameters.gammaTe);
-  result.problem = outerLoopCrossing(blade, boundary, wall);
-  if (!result.problem.empty()) return result;
-  int lowerIntervals = 0;
-  while (wall[static_cast<std::size_t>(lowerIntervals)].side == BladeSide::lower) ++lowerIntervals;
-  OuterLoop outer;
-  try {
-    outer = buildOuterLoop(boundary, nT, lowerIntervals, blade.leadingEdge().y(),
-                           blade.trailingEdge().y());
-  } catch (const std::invalid_argument& e) {
-    result.problem = e.what();
-    return result;
-  }
-
+// The O-block on the outer loop and the H-blocks beyond it, into `result` (its nN set):
+// valid, or the problem.
+void buildBlocks(HohMesh& result, const std::vector<BladeNode>& wall, const OuterLoop& outer,
+                 const PassageBoundary& boundary, const PassageCondition& condition,
+                 const HohMeshOptions& options) {
+  const int nT = static_cast<int>(wall.size());
   // The O-block: solved on evenly spaced rows, then clustered to the wall along the
   // smoothed lines (LineRedistribution.hpp).
   const int nN = result.nN, J = nN - 1;
@@ -171,7 +153,7 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
     result.smoothing = smoothOBlock(lines, options.elliptic);
     if (!std::isfinite(result.smoothing.residual)) {
       result.problem = "O-block: the elliptic smoothing diverged";
-      return result;
+      return;
     }
   }
   // A fold of the smoothed lines is named as such: placing rows along them cannot undo it.
@@ -179,7 +161,7 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
   if (!linesFold.empty()) {
     result.problem = std::string(options.smooth ? "the smoothed" : "the algebraic") + " lines fold: " +
                      linesFold + " of " + std::to_string(lines.nj) + " rows";
-    return result;
+    return;
   }
   StructuredBlock o = makeBlock("OBlock", nT + 1, nN);
   try {
@@ -190,7 +172,7 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
                            options.wallBlendLength);
   } catch (const std::invalid_argument& e) {
     result.problem = std::string("O-block: ") + e.what();
-    return result;
+    return;
   }
 
   // H-blocks: uniform cells, their interface nodes the O-block's.
@@ -238,6 +220,49 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
 
   result.problem = findInvalidCell(mesh);
   result.valid = result.problem.empty();
+}
+
+}  // namespace
+
+HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
+                     const MeshingParameters& parameters, const HohMeshOptions& options) {
+  const int nT = parameters.nT;
+  if (nT < 8) throw std::invalid_argument("buildHohMesh: nT must be at least 8");
+  HohMesh result;
+  result.nN = std::max(2, static_cast<int>(std::lround(static_cast<double>(condition.nO) / nT)));
+  const PassageBoundary boundary(blade, condition, parameters);
+
+  const auto wall = distributeBladeNodes(blade, nT, parameters.gammaLe, parameters.gammaTe);
+  result.problem = outerLoopCrossing(blade, boundary, wall);
+  if (!result.problem.empty()) return result;
+  int lowerIntervals = 0;
+  while (wall[static_cast<std::size_t>(lowerIntervals)].side == BladeSide::lower) ++lowerIntervals;
+  OuterLoop outer;
+  try {
+    outer = buildOuterLoop(boundary, nT, lowerIntervals, blade.leadingEdge().y(),
+                           blade.trailingEdge().y());
+  } catch (const std::invalid_argument& e) {
+    result.problem = e.what();
+    return result;
+  }
+
+  buildBlocks(result, wall, outer, boundary, condition, options);
+  // Where the lines fold (or the solve diverges) with the outer loop's orthogonality
+  // control, a second try without it: the lines then arrive at the angle the interior
+  // gives them, which a tight passage (a periodic boundary close to the blade) or lines
+  // leaning far to reach their outer nodes need (docs/elliptic-smoothing.md, "Second try").
+  if (!result.valid && options.smooth && options.secondTryWithoutOuterOrthogonality &&
+      options.elliptic.outerOrthogonality) {
+    HohMeshOptions second = options;
+    second.elliptic.outerOrthogonality = false;
+    HohMesh retry;
+    retry.nN = result.nN;
+    buildBlocks(retry, wall, outer, boundary, condition, second);
+    if (retry.valid) {
+      retry.firstTryProblem = result.problem;
+      result = std::move(retry);
+    }
+  }
   return result;
 }
 

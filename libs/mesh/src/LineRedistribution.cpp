@@ -56,7 +56,9 @@ void redistributeAlongLines(const StructuredBlock& lines, StructuredBlock& targe
     moveLastSpacing(d, plainLast + 0.9 * (loopSpacing - plainLast));
     for (int j = 0; j < target.nj; ++j) {
       Eigen::Vector2d q = j == 0 ? p.front() : j == target.nj - 1 ? p.back() : catmullRomAt(p, c, d[j]);
-      const double t = d[j] / std::max(blendLength * wallSpacing, 20 * firstSpacing);
+      // The blend ends within the line's first half: on a line shorter than the blend (a
+      // tight passage) it would otherwise move the outer node off the outer loop.
+      const double t = d[j] / std::min(std::max(blendLength * wallSpacing, 20 * firstSpacing), 0.5 * c.back());
       if (!wallNormals.empty() && j > 0 && t < 1) {
         // Row 1 exactly on the normal: the first cell height is exact.
         const double w = j == 1 ? 1.0 : (1 - t) * (1 - t) * (1 + 2 * t);

@@ -24,6 +24,9 @@ HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& 
   else  // refused before smoothing (a boundary through the blade, an impossible clustering),
         // or too few rows to smooth
     std::printf("%s: O-block %d x %d nodes; not smoothed\n", tool.c_str(), parameters.nT, hoh.nN);
+  if (!hoh.firstTryProblem.empty())
+    std::printf("  second try, without orthogonality at the outer loop: the first folded (%s)\n",
+                hoh.firstTryProblem.c_str());
   if (!hoh.valid) throw std::runtime_error("the mesh is invalid: " + hoh.problem);
 
   const StructuredBlock& o = hoh.mesh.blocks[1];

@@ -38,6 +38,10 @@ struct EllipticOptions {
   // Sorenson's control at the wall too (lines leave the wall orthogonally with the initial
   // wall spacing), iterated with the outer values; for grids without wall clustering.
   bool wallOrthogonality = true;
+  // Sorenson's control at the outer loop (lines arriving square to it with the initial
+  // spacing there). Off: the outer values are zero, the lines arrive at the angle the
+  // interior gives them; buildHohMesh's second try where the first mesh folds.
+  bool outerOrthogonality = true;
   double tolerance = 1e-5;          // ThompsonReport::residual of the full grid
   bool multigrid = true;            // false: single-grid line relaxation on the full grid
   int maxCycles = 100;              // multigrid V-cycles

@@ -37,6 +37,9 @@ struct HohMeshOptions {
   // Over this many wall node spacings from the wall (at least 20 firstCellHeight) the final
   // nodes blend from the wall normal into the smoothed line (LineRedistribution.hpp).
   double wallBlendLength = 3.0;
+  // Where the mesh is invalid with elliptic.outerOrthogonality, build it once more without
+  // (HohMesh::firstTryProblem says so).
+  bool secondTryWithoutOuterOrthogonality = true;
   EllipticOptions elliptic;
 };
 
@@ -46,6 +49,9 @@ struct HohMesh {
   bool valid = false;          // every cell of every block has positive area, convex corners
   std::string problem;         // why not valid (empty when valid)
   EllipticReport smoothing;    // sweeps, final residual, converged (sweeps 0: not smoothed)
+  // Non-empty when the mesh is the second try (HohMeshOptions): why the first, with the
+  // outer loop's orthogonality control, was invalid.
+  std::string firstTryProblem;
 };
 
 // Throws std::invalid_argument only for arguments no mesh can have (nT < 8);
