@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <random>
+
 #include "passageMesh/policy/PolicyNetworks.hpp"
 #include "passageMesh/policy/PolicyTrainer.hpp"
 #include "passageMesh/policy/ToyEnvironment.hpp"
@@ -47,6 +50,33 @@ TEST(ActorCritic, ActorOutputsStayInsideTheActionBox) {
   EXPECT_EQ(a.rows(), 5);
   EXPECT_EQ(a.cols(), 3);
   EXPECT_LE(a.cwiseAbs().maxCoeff(), 1.0);
+}
+
+// A critic that rewards ever larger actions (r = mean of a) drives a plain actor's tanh into
+// saturation, where its gradient vanishes; the bound penalty keeps it off the flat end.
+TEST(ActorCritic, TheBoundPenaltyKeepsTheActorOffTheFlatEndsOfTanh) {
+  auto largestAction = [](double penalty) {
+    ActorCritic learner(NetworkLayout{3, 2, {16, 16}, 0.01}, LearningRates{1e-2, 1e-2}, 3);
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> uniform(-1, 1);
+    PolicyBatch s(64, 3), a(64, 2);
+    Eigen::VectorXd r(64);
+    for (int step = 0; step < 400; ++step) {
+      for (int k = 0; k < 64; ++k) {
+        for (int c = 0; c < 3; ++c) s(k, c) = uniform(rng);
+        for (int c = 0; c < 2; ++c) a(k, c) = uniform(rng);
+        r(k) = a.row(k).mean();
+      }
+      learner.updateCritic(s, a, r);
+      learner.updateActor(s, penalty);
+    }
+    return learner.act(s).cwiseAbs().maxCoeff();
+  };
+  const double plain = largestAction(0), penalised = largestAction(10);
+  std::printf("largest action magnitude: plain %.5f, penalised %.5f\n", plain, penalised);
+  EXPECT_GT(plain, 0.99);
+  EXPECT_LT(penalised, 0.975);
+  EXPECT_GT(penalised, 0.9);  // it still goes where the critic points, up to the edge
 }
 
 // The must-show of issue 12: the actor-critic learns x*(c) of a problem with the passage's

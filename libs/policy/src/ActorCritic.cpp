@@ -1,5 +1,6 @@
 #include "passageMesh/policy/ActorCritic.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "passageMesh/policy/PolicyNetworks.hpp"
@@ -67,12 +68,17 @@ double ActorCritic::updateCritic(const PolicyBatch& states, const PolicyBatch& a
   return loss.item<double>();
 }
 
-double ActorCritic::updateActor(const PolicyBatch& states) {
+double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty) {
   Networks& n = *networks_;
   const torch::Tensor s = tensorOf(states);
   n.actorOptimizer.zero_grad();
-  const torch::Tensor q = n.critic->forward(torch::cat({s, n.actor->forward(s)}, 1)).mean();
+  const torch::Tensor u = n.actor->beforeOutput(s);
+  const torch::Tensor q = n.critic->forward(torch::cat({s, torch::tanh(u)}, 1)).mean();
   torch::Tensor loss = -q;
+  if (boundPenalty > 0) {
+    const double edge = std::atanh(0.95);
+    loss = loss + boundPenalty * torch::relu(u.abs() - edge).pow(2).mean();
+  }
   loss.backward();
   n.actorOptimizer.step();
   // The backward pass also left gradients in the critic; its own step clears them first.

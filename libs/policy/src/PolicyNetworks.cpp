@@ -20,6 +20,15 @@ FullyConnectedImpl::FullyConnectedImpl(int inputs, const std::vector<int>& hidde
 
 torch::Tensor FullyConnectedImpl::forward(torch::Tensor x) { return layers_->forward(x); }
 
+torch::Tensor FullyConnectedImpl::beforeOutput(torch::Tensor x) {
+  // The layers are Linear and LeakyReLU, with Tanh last on an actor (the constructor).
+  for (std::size_t k = 0; k < layers_->size(); ++k) {
+    if (auto* linear = layers_->ptr(k)->as<torch::nn::Linear>()) x = linear->forward(x);
+    else if (auto* leaky = layers_->ptr(k)->as<torch::nn::LeakyReLU>()) x = leaky->forward(x);
+  }
+  return x;
+}
+
 void FullyConnectedImpl::startAt(const std::vector<double>& output, double weightScale) {
   torch::NoGradGuard noGrad;
   const bool tanhOutput = layers_->ptr(layers_->size() - 1)->as<torch::nn::Tanh>() != nullptr;

@@ -104,6 +104,8 @@ const std::vector<Key>& keys() {
       {"criticUpdatesPerEpisode", readInteger("criticUpdatesPerEpisode", &O::criticUpdatesPerEpisode, 1),
        [](const O& o) { return std::to_string(o.criticUpdatesPerEpisode); }},
       {"actorUpdateEvery", readInteger("actorUpdateEvery", &O::actorUpdateEvery, 1), [](const O& o) { return std::to_string(o.actorUpdateEvery); }},
+      {"actionBoundPenalty", readPositive("actionBoundPenalty", [](O& o) -> double& { return o.actionBoundPenalty; }, true),
+       [](const O& o) { return exact(o.actionBoundPenalty); }},
       {"noiseStartSigma", readPositive("noiseStartSigma", [](O& o) -> double& { return o.noiseStartSigma; }, true),
        [](const O& o) { return exact(o.noiseStartSigma); }},
       {"noiseStartEpisodes", readInteger("noiseStartEpisodes", &O::noiseStartEpisodes, 0), [](const O& o) { return std::to_string(o.noiseStartEpisodes); }},

@@ -106,7 +106,7 @@ void PolicyTrainer::learnFrom(const std::vector<double>& state, const std::vecto
     }
     if (episode_ % options_.actorUpdateEvery == 0) {
       buffer_.sample(options_.minibatch, minibatchRandom_, s, a, r);
-      learner_.updateActor(s);
+      learner_.updateActor(s, options_.actionBoundPenalty);
     }
   }
   if (episode_ % options_.logEvery == 0) {

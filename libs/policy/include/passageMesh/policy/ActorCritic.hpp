@@ -42,8 +42,10 @@ class ActorCritic {
   // One Adam step of the critic on mean((Q(s, a) - r)^2); returns that loss before the step.
   double updateCritic(const PolicyBatch& states, const PolicyBatch& actions,
                       const Eigen::VectorXd& rewards);
-  // One Adam step of the actor on -mean(Q(s, pi(s))); returns mean Q(s, pi(s)) before it.
-  double updateActor(const PolicyBatch& states);
+  // One Adam step of the actor on -mean(Q(s, pi(s))) + boundPenalty * mean over states and
+  // actions of max(0, |u| - atanh(0.95))^2, u the actor's output before tanh; returns mean
+  // Q(s, pi(s)) before the step.
+  double updateActor(const PolicyBatch& states, double boundPenalty = 0);
 
   // Both networks and both optimisers' states, for checkpoints.
   void save(torch::serialize::OutputArchive& archive) const;

@@ -20,6 +20,8 @@ class FullyConnectedImpl : public torch::nn::Module {
   FullyConnectedImpl(int inputs, const std::vector<int>& hidden, int outputs, double leakySlope,
                      bool tanhOutput);
   torch::Tensor forward(torch::Tensor x);
+  // The output before the final tanh (the same as forward without one).
+  torch::Tensor beforeOutput(torch::Tensor x);
   // Makes the output start near `output` for every input: the last layer's weights are
   // scaled by `weightScale` and its bias set so that the output is `output` at zero
   // weights (through atanh for a tanh output; values clipped to +-0.95 there).

@@ -22,6 +22,10 @@ struct PolicyTrainOptions {
   double leakySlope = 0.01;
   int criticUpdatesPerEpisode = 1;  // paper: 1
   int actorUpdateEvery = 2;         // episodes per actor update (paper: 2)
+  // Weight of the actor's penalty on pre-tanh outputs beyond atanh(0.95), the action at
+  // 95 % of its half-range (0: none, the paper's): keeps tanh off its flat ends, where the
+  // actor's gradient vanishes and a saturated action cannot come back (docs/policy.md).
+  double actionBoundPenalty = 0;
   // Exploration noise on the actions (scaled units): sigma = noiseStartSigma for the first
   // noiseStartEpisodes, then noiseAmplitude (cos(2 pi episode / noisePeriod) + 1)
   // (paper: 1, 1000, 0.25, 1000).
