@@ -40,15 +40,27 @@ void expectExactPeriodicImages(const StructuredMesh& mesh, double chord) {
   }
 }
 
-}  // namespace
+// A tutorial's blade fitted from its points, as the tutorials do, and its passageDict.xml
+// condition (the paper's).
+struct Tutorial {
+  BladeShape blade;
+  double chord;
+  PassageCondition condition;
+};
 
-TEST_P(TutorialMesh, DefaultParametersGiveAValidSmoothMesh) {
-  const std::string name = GetParam();
+Tutorial loadTutorial(const std::string& name) {
   const auto points = orderBladePoints(readPointFile(testData::tutorialPoints(name))).points;
   const BladeShape blade(fitBlade(points).parameters);
   const double chord = blade.parameters().chord;
   const auto caseDir = testData::tutorialPoints(name).parent_path().parent_path();
-  const PassageCondition condition = readPassageDict(caseDir / "system" / "passageDict.xml", chord);
+  return {blade, chord, readPassageDict(caseDir / "system" / "passageDict.xml", chord)};
+}
+
+}  // namespace
+
+TEST_P(TutorialMesh, DefaultParametersGiveAValidSmoothMesh) {
+  const std::string name = GetParam();
+  const auto [blade, chord, condition] = loadTutorial(name);
   const MeshingParameters parameters = MeshingParameters::defaults(chord);
 
   const HohMesh hoh = buildHohMesh(blade, condition, parameters);
@@ -81,11 +93,7 @@ TEST_P(TutorialMesh, DefaultParametersGiveAValidSmoothMesh) {
 // by the second try without it (HohMeshOptions::secondTryWithoutOuterOrthogonality).
 TEST_P(TutorialMesh, DefaultParametersAreValidAtEveryPitchAndNodeCount) {
   const std::string name = GetParam();
-  const auto points = orderBladePoints(readPointFile(testData::tutorialPoints(name))).points;
-  const BladeShape blade(fitBlade(points).parameters);
-  const double chord = blade.parameters().chord;
-  const auto caseDir = testData::tutorialPoints(name).parent_path().parent_path();
-  const PassageCondition paper = readPassageDict(caseDir / "system" / "passageDict.xml", chord);
+  const auto [blade, chord, paper] = loadTutorial(name);
   const MeshingParameters parameters = MeshingParameters::defaults(chord);
   int meshed = 0, secondTries = 0;
   for (double pitch : {0.3, 0.5, 0.75, 1.0})
