@@ -15,7 +15,9 @@
 // (EllipticSmoother.hpp) solves the elliptic grid equations on them with lines
 // orthogonal at the wall and at the outer loop; then the nN final rows are placed along
 // the smoothed lines, clustered so that the first one sits exactly firstCellHeight from
-// the wall (LineRedistribution.hpp).
+// the wall (LineRedistribution.hpp). Where that mesh is invalid, it is built once more
+// without the outer loop's orthogonality control (HohMeshOptions,
+// docs/elliptic-smoothing.md "Second try").
 #include <string>
 
 #include "passageMesh/mesh/EllipticSmoother.hpp"
