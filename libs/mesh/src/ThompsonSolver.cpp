@@ -79,8 +79,8 @@ class LineSweeps {
  public:
   LineSweeps(StructuredBlock& block, const GridControl& control, const MovingRows& rows,
              double relaxation)
-      : block_(block), grid_(block, control), control_(control), first_(rows.first()),
-        last_(rows.last(block)), omega_(relaxation) {
+      : block_(block), grid_(block, control), first_(rows.first()), last_(rows.last(block)),
+        omega_(relaxation) {
     const std::size_t size = static_cast<std::size_t>(std::max(block.ni, block.nj));
     for (auto* v : {&pivotUpper_, &solutionX_, &solutionY_, &correction_}) v->resize(size);
   }
@@ -94,11 +94,11 @@ class LineSweeps {
       for (int k = 0; k < m; ++k) {
         const int j = first_ + k;
         const NodeTerms t = grid_.terms(i, j);
-        const double p = value(control_.phi, i, j), q = value(control_.psi, i, j);
+        const double p = grid_.phi(i, j), q = grid_.psi(i, j);
         const double lower = t.gamma * (1 - 0.5 * q), upper = t.gamma * (1 + 0.5 * q);
         const double aE = t.alpha * (1 + 0.5 * p), aW = t.alpha * (1 - 0.5 * p);
-        double rx = value(control_.forceX, i, j) - (aE * grid_.x(e, j) + aW * grid_.x(w, j) + t.crossX);
-        double ry = value(control_.forceY, i, j) - (aE * grid_.y(e, j) + aW * grid_.y(w, j) + t.crossY);
+        double rx = grid_.forceX(i, j) - (aE * grid_.x(e, j) + aW * grid_.x(w, j) + t.crossX);
+        double ry = grid_.forceY(i, j) - (aE * grid_.y(e, j) + aW * grid_.y(w, j) + t.crossY);
         if (k == 0) {
           rx -= lower * grid_.x(i, first_ - 1);
           ry -= lower * grid_.y(i, first_ - 1);
@@ -132,12 +132,12 @@ class LineSweeps {
       double cornerLow = 0, g = 0;
       for (int i = 0; i < n; ++i) {
         const NodeTerms t = grid_.terms(i, j);
-        const double p = value(control_.phi, i, j), q = value(control_.psi, i, j);
+        const double p = grid_.phi(i, j), q = grid_.psi(i, j);
         const double lower = t.alpha * (1 - 0.5 * p), upper = t.alpha * (1 + 0.5 * p);
         double diagonal = -2 * (t.alpha + t.gamma);
         const double gN = t.gamma * (1 + 0.5 * q), gS = t.gamma * (1 - 0.5 * q);
-        const double rx = value(control_.forceX, i, j) - (gN * grid_.x(i, j + 1) + gS * grid_.x(i, j - 1) + t.crossX);
-        const double ry = value(control_.forceY, i, j) - (gN * grid_.y(i, j + 1) + gS * grid_.y(i, j - 1) + t.crossY);
+        const double rx = grid_.forceX(i, j) - (gN * grid_.x(i, j + 1) + gS * grid_.x(i, j - 1) + t.crossX);
+        const double ry = grid_.forceY(i, j) - (gN * grid_.y(i, j + 1) + gS * grid_.y(i, j - 1) + t.crossY);
         double correction = 0;
         if (i == 0) {
           cornerLow = lower;
@@ -169,10 +169,6 @@ class LineSweeps {
   }
 
  private:
-  double value(const std::vector<double>& v, int i, int j) const {
-    return v.empty() ? 0.0 : v[static_cast<std::size_t>(i + grid_.n() * j)];
-  }
-
   void backSubstitute(int m, bool withCorrection = false) {
     for (int k = m - 2; k >= 0; --k) {
       solutionX_[k] -= pivotUpper_[k] * solutionX_[k + 1];
@@ -191,7 +187,6 @@ class LineSweeps {
 
   StructuredBlock& block_;
   Grid grid_;
-  const GridControl& control_;
   int first_, last_;
   double omega_;
   // Per node of the line: upper / pivot, then the solutions (x, y and the correction).
