@@ -117,3 +117,36 @@ TEST_P(TutorialMesh, DefaultParametersAreValidAtEveryPitchAndNodeCount) {
 INSTANTIATE_TEST_SUITE_P(Tutorials, TutorialMesh,
                          ::testing::Values("LS89", "STD10", "T106A", "SIRT"),
                          [](const auto& test) { return test.param; });
+
+// SIRT's sharp leading edge at the meshing parameters the shipped policy chose for it
+// (2026-12-02): the smoothed lines leave the wall next to the edge far from its normal,
+// and with the first blend the turn crosses the neighbouring line in row 7. The rows
+// placed again with a longer blend (HohMeshOptions::wallBlendRetries) give a valid mesh
+// with the first cell height and the periodic images exact.
+TEST(TutorialMeshBlend, ALongerWallBlendUnfoldsTheRowsNextToASharpEdge) {
+  const auto [blade, chord, condition] = loadTutorial("SIRT");
+  MeshingParameters p = MeshingParameters::defaults(chord);
+  p.yIn = 0.0013045615771181407;
+  p.yOut = 0.0012244588984728216;
+  p.alphaCamber = 1;
+  p.betaIn = 0.84482977390289304;
+  p.betaOut = 0.89315030574798582;
+  p.nT = 442;
+  p.gammaLe = 2.9545793309807777;
+  p.gammaTe = 4.9245585501194;
+  HohMeshOptions once;
+  once.wallBlendRetries = 0;
+  const HohMesh folded = buildHohMesh(blade, condition, p, once);
+  ASSERT_FALSE(folded.valid);
+  EXPECT_NE(folded.problem.find("OBlock cell"), std::string::npos) << folded.problem;
+
+  const HohMesh hoh = buildHohMesh(blade, condition, p);
+  ASSERT_TRUE(hoh.valid) << hoh.problem;
+  EXPECT_TRUE(hoh.firstTryProblem.empty()) << "the longer blend, not the second try, should mend it";
+  expectExactPeriodicImages(hoh.mesh, chord);
+  const StructuredBlock& o = hoh.mesh.blocks[1];
+  for (int i = 0; i < o.ni - 1; ++i)  // row 1 stays exactly on the normal
+    EXPECT_NEAR(std::hypot(o.xAt(i, 1) - o.xAt(i, 0), o.yAt(i, 1) - o.yAt(i, 0)),
+                condition.firstCellHeight, 1e-9 * chord) << "i = " << i;
+  EXPECT_TRUE(computeMeshQuality(hoh.mesh).valid);
+}

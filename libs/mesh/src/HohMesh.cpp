@@ -168,8 +168,16 @@ void buildBlocks(HohMesh& result, const std::vector<BladeNode>& wall, const Oute
     // The wall normals smoothed twice only: orthogonal to the wall to within a degree
     // except at the sharpest edges, where the raw normals of SIRT's trailing edge (radius
     // about 2 firstCellHeight) fold the second cell.
-    redistributeAlongLines(lines, o, condition.firstCellHeight, lineDirections(wall, 2),
-                           options.wallBlendLength);
+    const auto normals = lineDirections(wall, 2);
+    // Where the smoothed lines leave the wall far from its normal (next to a sharp edge),
+    // the turn from the normal into the line within the blend can cross the neighbouring
+    // line's: then the rows are placed again with a blend twice as long, up to
+    // options.wallBlendRetries times. A mesh valid at the first blend is never changed.
+    double blend = options.wallBlendLength;
+    for (int attempt = 0;; ++attempt, blend *= 2) {
+      redistributeAlongLines(lines, o, condition.firstCellHeight, normals, blend);
+      if (attempt == options.wallBlendRetries || findInvalidCell(StructuredMesh{{o}, {}, {}}).empty()) break;
+    }
   } catch (const std::invalid_argument& e) {
     result.problem = std::string("O-block: ") + e.what();
     return;

@@ -15,7 +15,8 @@
 // (EllipticSmoother.hpp) solves the elliptic grid equations on them with lines
 // orthogonal at the wall and at the outer loop; then the nN final rows are placed along
 // the smoothed lines, clustered so that the first one sits exactly firstCellHeight from
-// the wall (LineRedistribution.hpp). Where that mesh is invalid, it is built once more
+// the wall (LineRedistribution.hpp); where those rows fold, they are placed again with a
+// longer wall blend. Where that mesh is invalid, it is built once more
 // without the outer loop's orthogonality control (HohMeshOptions,
 // docs/elliptic-smoothing.md "Second try").
 #include <string>
@@ -39,6 +40,10 @@ struct HohMeshOptions {
   // Over this many wall node spacings from the wall (at least 20 firstCellHeight) the final
   // nodes blend from the wall normal into the smoothed line (LineRedistribution.hpp).
   double wallBlendLength = 3.0;
+  // Where the O-block folds after the rows are placed, they are placed again with the
+  // blend twice as long, at most this many times (0: never; docs/elliptic-smoothing.md
+  // "Longer wall blend where the rows fold").
+  int wallBlendRetries = 3;
   // Where the mesh is invalid with elliptic.outerOrthogonality, build it once more without
   // (HohMesh::firstTryProblem says so).
   bool secondTryWithoutOuterOrthogonality = true;
