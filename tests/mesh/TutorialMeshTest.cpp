@@ -143,6 +143,8 @@ TEST(TutorialMeshBlend, ALongerWallBlendUnfoldsTheRowsNextToASharpEdge) {
   const HohMesh hoh = buildHohMesh(blade, condition, p);
   ASSERT_TRUE(hoh.valid) << hoh.problem;
   EXPECT_TRUE(hoh.firstTryProblem.empty()) << "the longer blend, not the second try, should mend it";
+  EXPECT_GT(hoh.wallBlendLength, HohMeshOptions{}.wallBlendLength);
+  EXPECT_EQ(folded.wallBlendLength, HohMeshOptions{}.wallBlendLength);
   expectExactPeriodicImages(hoh.mesh, chord);
   const StructuredBlock& o = hoh.mesh.blocks[1];
   for (int i = 0; i < o.ni - 1; ++i)  // row 1 stays exactly on the normal

@@ -176,6 +176,7 @@ void buildBlocks(HohMesh& result, const std::vector<BladeNode>& wall, const Oute
     double blend = options.wallBlendLength;
     for (int attempt = 0;; ++attempt, blend *= 2) {
       redistributeAlongLines(lines, o, condition.firstCellHeight, normals, blend);
+      result.wallBlendLength = blend;
       if (attempt == options.wallBlendRetries || findInvalidCell(StructuredMesh{{o}, {}, {}}).empty()) break;
     }
   } catch (const std::invalid_argument& e) {

@@ -27,6 +27,9 @@ HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& 
   if (!hoh.firstTryProblem.empty())
     std::printf("  second try, without orthogonality at the outer loop: the first folded (%s)\n",
                 hoh.firstTryProblem.c_str());
+  if (hoh.valid && hoh.wallBlendLength > HohMeshOptions{}.wallBlendLength)
+    std::printf("  rows placed with a wall blend of %g wall spacings: they folded with %g\n",
+                hoh.wallBlendLength, HohMeshOptions{}.wallBlendLength);
   if (!hoh.valid) throw std::runtime_error("the mesh is invalid: " + hoh.problem);
 
   const StructuredBlock& o = hoh.mesh.blocks[1];

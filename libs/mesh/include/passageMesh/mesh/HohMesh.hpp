@@ -59,6 +59,9 @@ struct HohMesh {
   // Non-empty when the mesh is the second try (HohMeshOptions): why the first, with the
   // outer loop's orthogonality control, was invalid.
   std::string firstTryProblem;
+  // The wall blend the rows were placed with, in wall node spacings: longer than
+  // HohMeshOptions::wallBlendLength when the rows folded with it (0: not placed).
+  double wallBlendLength = 0;
 };
 
 // Throws std::invalid_argument only for arguments no mesh can have (nT < 8);
