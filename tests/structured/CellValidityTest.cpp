@@ -34,4 +34,7 @@ TEST(CellValidity, FindsTheFirstInvalidCellByBlockRowAndColumn) {
   mesh.blocks[0].yAt(3, 2) = 0.5;  // pulls a corner of cell (2, 1) of block B across it
   mesh.blocks[0].xAt(3, 2) = 1.5;
   EXPECT_EQ(findInvalidCell(mesh), "B cell (2, 1) is folded or degenerate");
+  // One block alone: the same message.
+  EXPECT_EQ(findInvalidCell(mesh.blocks[1]), "C cell (1, 0) is folded or degenerate");
+  EXPECT_EQ(findInvalidCell(uniformBlock("D", 3, 3)), "");
 }

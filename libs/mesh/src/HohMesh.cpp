@@ -157,7 +157,7 @@ void buildBlocks(HohMesh& result, const std::vector<BladeNode>& wall, const Oute
     }
   }
   // A fold of the smoothed lines is named as such: placing rows along them cannot undo it.
-  const std::string linesFold = findInvalidCell(StructuredMesh{{lines}, {}, {}});
+  const std::string linesFold = findInvalidCell(lines);
   if (!linesFold.empty()) {
     result.problem = std::string(options.smooth ? "the smoothed" : "the algebraic") + " lines fold: " +
                      linesFold + " of " + std::to_string(lines.nj) + " rows";
@@ -177,7 +177,7 @@ void buildBlocks(HohMesh& result, const std::vector<BladeNode>& wall, const Oute
     for (int attempt = 0;; ++attempt, blend *= 2) {
       redistributeAlongLines(lines, o, condition.firstCellHeight, normals, blend);
       result.wallBlendLength = blend;
-      if (attempt == options.wallBlendRetries || findInvalidCell(StructuredMesh{{o}, {}, {}}).empty()) break;
+      if (attempt == options.wallBlendRetries || findInvalidCell(o).empty()) break;
     }
   } catch (const std::invalid_argument& e) {
     result.problem = std::string("O-block: ") + e.what();

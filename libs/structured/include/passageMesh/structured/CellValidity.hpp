@@ -39,5 +39,7 @@ inline void cellCorners(const StructuredBlock& block, int i, int j, CellCorners&
 // The first invalid cell, blocks in order and in each block j-major then i, as
 // "<block> cell (i, j) is folded or degenerate"; empty when every cell is valid.
 std::string findInvalidCell(const StructuredMesh& mesh);
+// The same for one block (no mesh around it to build: HohMesh checks its O-block alone).
+std::string findInvalidCell(const StructuredBlock& block);
 
 }  // namespace passageMesh
