@@ -38,6 +38,27 @@ TEST(OuterLoop, PeriodicNodesAreExactImagesAndCountsAddUp) {
   EXPECT_EQ(loop.nodes[loop.upperPeriodicEnd() % 300].x(), boundary.outletInterfaceX());
 }
 
+TEST(OuterLoop, PeriodicSpacingMeetsTheInterfaceSpacingAtTheCorners) {
+  // Uniform when the interfaces' spacing is the segment's own.
+  const auto uniform = periodicArcPositions(2.0, 80, 2.0 / 80, 2.0 / 80);
+  for (int k = 0; k <= 80; ++k) EXPECT_NEAR(uniform[k], 2.0 * k / 80, 1e-15) << k;
+  // A finer inlet and a coarser outlet: the end intervals follow them (to the O(1/n^2)
+  // of a first difference), the middle stays nearly uniform, the positions increase throughout.
+  const double inlet = 0.7 * 2.0 / 80, outlet = 1.3 * 2.0 / 80;
+  const auto graded = periodicArcPositions(2.0, 80, inlet, outlet);
+  EXPECT_EQ(graded.front(), 0.0);
+  EXPECT_EQ(graded.back(), 2.0);
+  EXPECT_NEAR(graded[1] - graded[0], inlet, 0.05 * inlet);
+  EXPECT_NEAR(graded[80] - graded[79], outlet, 0.05 * outlet);
+  EXPECT_NEAR(graded[41] - graded[40], 2.0 / 80, 5e-3 * 2.0 / 80);  // the blends' tails: 0.1 %
+  for (int k = 1; k <= 80; ++k) EXPECT_GT(graded[k], graded[k - 1]) << k;
+  // Even spacings far off the segment's keep the positions increasing (the correction is
+  // clipped).
+  const auto extreme = periodicArcPositions(1.0, 10, 1.0, 1e-6);
+  for (int k = 1; k <= 10; ++k) EXPECT_GT(extreme[k], extreme[k - 1]) << k;
+  EXPECT_THROW(periodicArcPositions(1.0, 0, 0.1, 0.1), std::invalid_argument);
+}
+
 TEST(HohMesh, BlocksArePointMatchedAndPeriodic) {
   const BladeShape blade(testData::typicalTurbineBlade());
   const double C = blade.parameters().chord;

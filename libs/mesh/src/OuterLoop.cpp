@@ -40,6 +40,27 @@ std::vector<int> share(int total, const std::vector<double>& lengths, int minimu
 
 }  // namespace
 
+std::vector<double> periodicArcPositions(double length, int intervals, double inletSpacing,
+                                         double outletSpacing) {
+  if (intervals < 1 || !(length > 0) || !(inletSpacing > 0) || !(outletSpacing > 0))
+    throw std::invalid_argument("periodicArcPositions: need intervals >= 1 and positive lengths");
+  // s(xi) = L xi + c0 xi (1 - xi)^m - c1 xi^m (1 - xi): s'(0) = L + c0, s'(1) = L + c1, so
+  // the end intervals are about the wanted spacings, and the corrections fade within about
+  // 1/m of the segment. |c| <= L keeps s' > 0: the correction terms' slopes dip to -0.17
+  // at most for m = 8.
+  constexpr int m = 8;
+  const double c0 = std::clamp(inletSpacing * intervals - length, -length, length);
+  const double c1 = std::clamp(outletSpacing * intervals - length, -length, length);
+  std::vector<double> s(static_cast<std::size_t>(intervals) + 1);
+  for (int k = 0; k <= intervals; ++k) {
+    const double xi = static_cast<double>(k) / intervals;
+    s[k] = length * xi + c0 * xi * std::pow(1 - xi, m) - c1 * std::pow(xi, m) * (1 - xi);
+  }
+  s.front() = 0;
+  s.back() = length;
+  return s;
+}
+
 OuterLoop buildOuterLoop(const PassageBoundary& boundary, int nT, int lowerSideIntervals,
                          double leadingEdgeY, double trailingEdgeY) {
   const double xA = boundary.inletInterfaceX(), xB = boundary.outletInterfaceX();
@@ -81,8 +102,9 @@ OuterLoop buildOuterLoop(const PassageBoundary& boundary, int nT, int lowerSideI
   for (int k = 0; k < loop.outletLower; ++k)  // seam down to the lower outlet corner
     p.emplace_back(xB, yLowB + (loop.outletLower - k) * dyOut);
   std::vector<double> periodicX(loop.periodic + 1);
+  const auto periodicArc = periodicArcPositions(arc.length(), loop.periodic, dyIn, dyOut);
   for (int k = 0; k <= loop.periodic; ++k)
-    periodicX[k] = k == 0 ? xA : (k == loop.periodic ? xB : arc.parameterAt(arc.length() * k / loop.periodic));
+    periodicX[k] = k == 0 ? xA : (k == loop.periodic ? xB : arc.parameterAt(periodicArc[k]));
   for (int k = loop.periodic; k > 0; --k)  // lower periodic, xB to xA (corner at xA next)
     p.emplace_back(periodicX[k], boundary.lowerY(periodicX[k]));
   for (int k = 0; k < loop.inletLower + loop.inletUpper; ++k)  // inlet, bottom to top

@@ -19,7 +19,10 @@
 // segment and the inlet interface's lower part, the upper side's nodes the rest, in
 // proportion to the pieces' lengths. Both periodic segments carry the same count and the
 // same x values, bit for bit: y_upper = y_lower + pitch. Interface nodes are uniform in y
-// (the H-blocks beyond them have uniform cells); periodic nodes uniform in arc length.
+// (the H-blocks beyond them have uniform cells); periodic nodes uniform in arc length
+// except near the two corners, where their spacing grows or shrinks to the interface's
+// (periodicArcPositions): the cells at a corner are then as large on both of its sides
+// whatever the counts, so one node more on an interface no longer jumps Q_J there.
 #include <Eigen/Core>
 #include <vector>
 
@@ -36,6 +39,13 @@ struct OuterLoop {
   int upperPeriodicBegin() const { return lowerPeriodicEnd() + inletLower + inletUpper; }
   int upperPeriodicEnd() const { return upperPeriodicBegin() + periodic; }  // outlet corner
 };
+
+// Arc-length positions s_0 = 0 < s_1 < ... < s_intervals = length of the periodic nodes
+// from the inlet corner: uniform in the middle, the first interval about `inletSpacing`
+// and the last about `outletSpacing` (the interfaces' node spacings), blended in smoothly
+// over the eighth of the segment next to each corner (docs/elliptic-smoothing.md).
+std::vector<double> periodicArcPositions(double length, int intervals, double inletSpacing,
+                                         double outletSpacing);
 
 // `lowerSideIntervals`: the blade nodes from the trailing edge (i = 0) to the leading edge
 // (i = lowerSideIntervals); `nT` nodes in all. Throws std::invalid_argument when a piece
