@@ -52,8 +52,8 @@ TEST(OuterLoop, PeriodicSpacingMeetsTheInterfaceSpacingAtTheCorners) {
   EXPECT_NEAR(graded[80] - graded[79], outlet, 0.05 * outlet);
   EXPECT_NEAR(graded[41] - graded[40], 2.0 / 80, 5e-3 * 2.0 / 80);  // the blends' tails: 0.1 %
   for (int k = 1; k <= 80; ++k) EXPECT_GT(graded[k], graded[k - 1]) << k;
-  // Even spacings far off the segment's keep the positions increasing (the correction is
-  // clipped).
+  // Spacings far off the segment's own still give increasing positions (the corrections
+  // are clipped at the segment's length).
   const auto extreme = periodicArcPositions(1.0, 10, 1.0, 1e-6);
   for (int k = 1; k <= 10; ++k) EXPECT_GT(extreme[k], extreme[k - 1]) << k;
   EXPECT_THROW(periodicArcPositions(1.0, 0, 0.1, 0.1), std::invalid_argument);
