@@ -3,6 +3,7 @@
 // list. The blades are fitted from their points here, as the tutorials do.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -117,6 +118,47 @@ TEST_P(TutorialMesh, DefaultParametersAreValidAtEveryPitchAndNodeCount) {
 INSTANTIATE_TEST_SUITE_P(Tutorials, TutorialMesh,
                          ::testing::Values("LS89", "STD10", "T106A", "SIRT"),
                          [](const auto& test) { return test.param; });
+
+// The mean kink [deg] of the lines where they cross the periodic boundary, over the middle
+// half of the periodic pairs: the angle between a lower line's last segment and the
+// segment from its outer node to the periodic image of its partner's row nj - 2.
+double meanPeriodicKink(const StructuredMesh& mesh) {
+  const auto c = std::find_if(mesh.connections.begin(), mesh.connections.end(),
+                              [](const BlockConnection& k) { return k.name == "oBlockPeriodic"; });
+  EXPECT_NE(c, mesh.connections.end());
+  const StructuredBlock& o = mesh.blocks[1];
+  const int J = o.nj - 1, pairs = c->a.end[0] - c->a.begin[0];
+  double sum = 0;
+  int count = 0;
+  for (int k = pairs / 4; k <= pairs - pairs / 4; ++k, ++count) {
+    const int lower = c->a.begin[0] + k, upper = c->b.begin[0] - k;
+    const Eigen::Vector2d node(o.xAt(lower, J), o.yAt(lower, J));
+    const Eigen::Vector2d in = node - Eigen::Vector2d(o.xAt(lower, J - 1), o.yAt(lower, J - 1));
+    const Eigen::Vector2d out = Eigen::Vector2d(o.xAt(upper, J - 1), o.yAt(upper, J - 1)) - c->translation - node;
+    sum += std::acos(std::clamp(in.normalized().dot(out.normalized()), -1.0, 1.0)) * 180 / M_PI;
+  }
+  return sum / count;
+}
+
+// The lines on the periodic segments continue through the periodic image instead of
+// arriving square (EllipticOptions::periodicContinuation): they cross the periodic
+// boundary with a smaller kink, and Q is higher (docs/elliptic-smoothing.md, sixth
+// session: mean kink LS89 23 -> 0.9 deg, Q 0.554 -> 0.590).
+TEST_P(TutorialMesh, PeriodicLinesContinueThroughTheirImages) {
+  const auto [blade, chord, condition] = loadTutorial(GetParam());
+  const MeshingParameters p = MeshingParameters::defaults(chord);
+  HohMeshOptions square;
+  square.elliptic.periodicContinuation = false;
+  const HohMesh continued = buildHohMesh(blade, condition, p), squared = buildHohMesh(blade, condition, p, square);
+  ASSERT_TRUE(continued.valid) << continued.problem;
+  ASSERT_TRUE(squared.valid) << squared.problem;
+  const double kinkContinued = meanPeriodicKink(continued.mesh), kinkSquare = meanPeriodicKink(squared.mesh);
+  std::printf("%s: mean kink at the periodic boundary %.2f deg (square arrival %.2f deg)\n",
+              GetParam().c_str(), kinkContinued, kinkSquare);
+  EXPECT_LT(kinkContinued, 0.7 * kinkSquare);
+  EXPECT_GT(computeMeshQuality(continued.mesh).Q, computeMeshQuality(squared.mesh).Q);
+  expectExactPeriodicImages(continued.mesh, chord);
+}
 
 // SIRT's sharp leading edge at the meshing parameters the shipped policy chose for it
 // (2026-12-02): the smoothed lines leave the wall next to the edge far from its normal,

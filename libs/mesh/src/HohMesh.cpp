@@ -150,7 +150,10 @@ void buildBlocks(HohMesh& result, const std::vector<BladeNode>& wall, const Oute
   const int nN = result.nN, J = nN - 1;
   StructuredBlock lines = algebraicOBlock(wall, outer, std::min(nN, options.smoothingRows));
   if (options.smooth && lines.nj >= 4) {
-    result.smoothing = smoothOBlock(lines, options.elliptic);
+    const PeriodicOuterSegments periodic{outer.lowerPeriodicBegin(), outer.lowerPeriodicEnd(),
+                                         outer.upperPeriodicBegin(), outer.upperPeriodicEnd(),
+                                         Eigen::Vector2d(0, condition.pitch)};
+    result.smoothing = smoothOBlock(lines, options.elliptic, periodic);
     if (!std::isfinite(result.smoothing.residual)) {
       result.problem = "O-block: the elliptic smoothing diverged";
       return;

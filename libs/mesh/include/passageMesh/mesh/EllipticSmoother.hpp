@@ -22,8 +22,17 @@
 // node distribution, psiWall is not used and s = (j - 1) / (nj - 2).
 // Orthogonality at the outer loop is what keeps the grid unfolded at its re-entrant
 // kinks (where a camber-following periodic boundary meets the straight outlet part).
+// On the periodic segments (when smoothOBlock is given them) the outer control asks for
+// lines that continue through the periodic image instead of arriving square: the target
+// direction at a periodic node is the chord from its row nj - 2 node to the image of its
+// partner's, turning to the boundary normal next to the four corners
+// (periodicContinuationBlend). At an interface square arrival is the continuation into
+// the H-block's straight lines, so it stays (docs/elliptic-smoothing.md).
 // The full grid is then solved with the control functions fixed, by FAS multigrid
 // (ThompsonMultigrid.hpp), or by single-grid line relaxation.
+#include <Eigen/Core>
+#include <optional>
+
 #include "passageMesh/structured/StructuredMesh.hpp"
 #include "passageMesh/mesh/ThompsonSolver.hpp"
 
@@ -42,6 +51,12 @@ struct EllipticOptions {
   // spacing there). Off: the outer values are zero, the lines arrive at the angle the
   // interior gives them; buildHohMesh's second try where the first mesh folds.
   bool outerOrthogonality = true;
+  // With the periodic segments given: their lines continue through the periodic image
+  // (false: square to the boundary there too), with the target direction turning from the
+  // boundary normal at each corner to the continued line's over this fraction of the
+  // segment's intervals (smoothstep). 0.2 measured best of 0 (no turn) to 0.5.
+  bool periodicContinuation = true;
+  double periodicContinuationBlend = 0.2;
   double tolerance = 1e-5;          // ThompsonReport::residual of the full grid
   bool multigrid = true;            // false: single-grid line relaxation on the full grid
   int maxCycles = 100;              // multigrid V-cycles
@@ -66,7 +81,17 @@ struct EllipticReport {
   bool converged = false;
 };
 
+// The outer loop's periodic segments (OuterLoop.hpp): outer node lowerBegin + k (k = 0 at
+// the outlet corner, lowerEnd at the inlet corner) and upperEnd - k are one periodic
+// pair, upper = lower + translation.
+struct PeriodicOuterSegments {
+  int lowerBegin = 0, lowerEnd = 0, upperBegin = 0, upperEnd = 0;
+  Eigen::Vector2d translation = Eigen::Vector2d::Zero();  // [m]
+};
+
 // `oBlock`: ni = nT + 1 (seam repeated), nj >= 4 rows, as buildHohMesh makes it.
-EllipticReport smoothOBlock(StructuredBlock& oBlock, const EllipticOptions& options = {});
+// `periodic`: the outer loop's periodic segments (none: every outer line arrives square).
+EllipticReport smoothOBlock(StructuredBlock& oBlock, const EllipticOptions& options = {},
+                            const std::optional<PeriodicOuterSegments>& periodic = std::nullopt);
 
 }  // namespace passageMesh
