@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -58,7 +59,8 @@ void redistributeAlongLines(const StructuredBlock& lines, StructuredBlock& targe
       Eigen::Vector2d q = j == 0 ? p.front() : j == target.nj - 1 ? p.back() : catmullRomAt(p, c, d[j]);
       // The blend ends within the line's first half: on a line shorter than the blend (a
       // tight passage) it would otherwise move the outer node off the outer loop.
-      const double t = d[j] / std::min(std::max(blendLength * wallSpacing, 20 * firstSpacing), 0.5 * c.back());
+      const double reach = std::min(std::max(blendLength * wallSpacing, 20 * firstSpacing), 0.5 * c.back());
+      const double t = d[j] <= firstSpacing ? 0.0 : std::log(d[j] / firstSpacing) / std::log(reach / firstSpacing);
       if (!wallNormals.empty() && j > 0 && t < 1) {
         // Row 1 exactly on the normal: the first cell height is exact.
         const double w = j == 1 ? 1.0 : (1 - t) * (1 - t) * (1 + 2 * t);

@@ -18,10 +18,14 @@ namespace passageMesh {
 // the way to the outer loop's node spacing there (moveLastSpacing: nearly square cells at
 // the outer loop, matching the H-blocks and the periodic images). The last row is `lines`' outer row exactly.
 // Near the wall the nodes are pulled onto the straight line along `wallNormals[i]`
-// (unit, one per loop node): row 1 exactly, then less and less (a smoothstep) up to
-// `blendLength` times the wall node spacing there (at least 20 firstSpacing): the first cell height is exactly
-// `firstSpacing` along the normal and the lines leave the wall orthogonally, then turn
-// smoothly into the smoothed lines. Empty `wallNormals`: no blend.
+// (unit, one per loop node): row 1 exactly, then less and less up to a distance L of
+// `blendLength` times the wall node spacing there (at least 20 firstSpacing): the first
+// cell height is exactly `firstSpacing` along the normal and the lines leave the wall
+// orthogonally, then turn smoothly into the smoothed lines. The pull is a smoothstep in
+// log(d / firstSpacing) / log(L / firstSpacing), d the distance from the wall: the
+// wall-clustered rows grow about geometrically, so the turn is spread evenly over the
+// rows of the blend instead of being taken in its last few (docs/elliptic-smoothing.md).
+// Empty `wallNormals`: no blend.
 // Throws std::invalid_argument when a line is too short for the first spacing.
 void redistributeAlongLines(const StructuredBlock& lines, StructuredBlock& target,
                             double firstSpacing,
