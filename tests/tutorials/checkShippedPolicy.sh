@@ -6,19 +6,8 @@
 set -uo pipefail
 source="$1"
 blade="$3"
-copy="$(mktemp -d)"
-trap 'rm -rf "$copy"' EXIT
-cp -r "$2/constant" "$2/system" "$copy/"
-rm -f "$copy/system/meshDict.xml"
-log="$(policyMesh -case "$copy" -policy "$source/etc/policy/policy.xml" 2>&1)"
-status=$?
-if [ "$status" = 0 ]; then
-  q="$(sed -n 's/^policyMesh: Q = \([^ ]*\).*/\1/p' <<< "$log")"
-elif grep -q "the mesh is invalid" <<< "$log"; then
-  q=-1
-else
-  echo "$blade: policyMesh failed:"; echo "$log" | tail -3; exit 1
-fi
+. "$source/etc/RunFunctions" || exit 1
+q="$(oneShotQ "$2" "$source/etc/policy/policy.xml")" || { echo "$blade: policyMesh failed"; exit 1; }
 recorded="$(awk -F, -v b="$blade" '$1 == b {print $2}' "$source/etc/policy/tutorialOneShot.csv")"
 [ -n "$recorded" ] || { echo "$blade: no recorded one-shot Q"; exit 1; }
 echo "$blade: shipped policy one-shot Q $q (recorded $recorded)"
