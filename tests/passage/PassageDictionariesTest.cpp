@@ -29,6 +29,18 @@ TEST(PassageDict, ReadsLengthsInChordsAndWarnsOutsideTheMethodRange) {
   EXPECT_NE(warnings[0].find("<nO>"), std::string::npos) << warnings[0];
 }
 
+TEST(PassageDict, AWarningAboutALengthGivenInMetresSaysItInChords) {
+  const auto file = writeTemp("m.xml",
+                              "<passageDict><pitch>0.12</pitch><xIn>0.5c</xIn><xOut>0.5c</xOut>"
+                              "<nO>30000</nO><firstCellHeight>1.1e-4c</firstCellHeight></passageDict>");
+  std::vector<std::string> warnings;
+  readPassageDict(file, 0.1, &warnings);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("<pitch> 0.12 (1.2c) is outside the method's range 0.3c..1c"),
+            std::string::npos)
+      << warnings[0];
+}
+
 TEST(PassageDict, RefusesImpossibleValuesAndMissingKeys) {
   auto dict = [](const std::string& pitch, const std::string& nO) {
     return "<passageDict>\n<pitch>" + pitch + "</pitch>\n<xIn>0.5c</xIn>\n<xOut>0.5c</xOut>\n<nO>" +

@@ -3,6 +3,9 @@
 #include "passageMesh/core/Dictionary.hpp"
 #include "passageMesh/core/InputError.hpp"
 
+#include <iomanip>
+#include <sstream>
+
 namespace passageMesh {
 
 PassageCondition readPassageDict(const std::filesystem::path& file, double chord,
@@ -28,19 +31,24 @@ PassageCondition readPassageDict(const std::filesystem::path& file, double chord
   if (c.firstCellHeight <= 0) refuse("firstCellHeight", "a positive length");
   c.nO = static_cast<int>(nO);
 
+  // A length is compared in chords; the warning says the value in chords too, since the
+  // dictionary may give it in metres ("0.1" for STD10's pitch is 1.008c).
   auto outside = [&](const std::string& key, double value, double lo, double hi,
-                     const std::string& range) {
-    if (warnings && (value < lo || value > hi))
-      warnings->push_back(file.string() + ":" + std::to_string(dict.line(key)) + ": <" + key +
-                          "> " + dict.text(key) + " is outside the method's range " + range);
+                     const std::string& range, bool inChords) {
+    if (!warnings || (value >= lo && value <= hi)) return;
+    std::ostringstream given;
+    given << dict.text(key);
+    if (inChords) given << " (" << std::setprecision(4) << value << "c)";
+    warnings->push_back(file.string() + ":" + std::to_string(dict.line(key)) + ": <" + key +
+                        "> " + given.str() + " is outside the method's range " + range);
   };
   using R = PassageConditionRange;
-  outside("pitch", c.pitch / chord, R::pitchMin, R::pitchMax, "0.3c..1c");
-  outside("xIn", c.xIn / chord, R::xInMin, R::xInMax, "0..1c");
-  outside("xOut", c.xOut / chord, R::xOutMin, R::xOutMax, "0..1c");
-  outside("nO", c.nO, R::nOMin, R::nOMax, "10000..50000");
+  outside("pitch", c.pitch / chord, R::pitchMin, R::pitchMax, "0.3c..1c", true);
+  outside("xIn", c.xIn / chord, R::xInMin, R::xInMax, "0..1c", true);
+  outside("xOut", c.xOut / chord, R::xOutMin, R::xOutMax, "0..1c", true);
+  outside("nO", c.nO, R::nOMin, R::nOMax, "10000..50000", false);
   outside("firstCellHeight", c.firstCellHeight / chord, R::firstCellHeightMin,
-          R::firstCellHeightMax, "2e-5c..2e-4c");
+          R::firstCellHeightMax, "2e-5c..2e-4c", true);
   return c;
 }
 
