@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "passageMesh/core/AtomicFile.hpp"
+#include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/core/GnuplotRun.hpp"
 #include "passageMesh/core/ParallelFor.hpp"
 #include "passageMesh/optimize/Optimizer.hpp"
@@ -25,104 +26,107 @@
 using namespace passageMesh;
 
 int main(int argc, char* argv[]) {
-  if (argc < 4) {
-    std::fprintf(stderr, "usage: policyEvaluation POLICY.xml|defaults SEED COUNT [BUDGET [OUT.csv]]\n");
-    return 2;
-  }
-  const std::string which = argv[1];
-  const std::uint64_t seed = std::stoull(argv[2]);
-  const int count = std::stoi(argv[3]);
-  const long budget = argc > 4 ? std::stol(argv[4]) : 0;
-  const PassageEnvironment environment;
-  std::optional<Policy> policy;
-  if (which != "defaults") policy = Policy::load(which);
+  // A missing or corrupt file ends in one line on stderr and exit code 1, not a crash.
+  return runUtility("policyEvaluation", [&] {
+    if (argc < 4) {
+      std::fprintf(stderr, "usage: policyEvaluation POLICY.xml|defaults SEED COUNT [BUDGET [OUT.csv]]\n");
+      return 2;
+    }
+    const std::string which = argv[1];
+    const std::uint64_t seed = std::stoull(argv[2]);
+    const int count = std::stoi(argv[3]);
+    const long budget = argc > 4 ? std::stol(argv[4]) : 0;
+    const PassageEnvironment environment;
+    std::optional<Policy> policy;
+    if (which != "defaults") policy = Policy::load(which);
 
-  struct Row {
-    double oneShot = -1, best = -1;
-  };
-  std::vector<Row> rows(static_cast<std::size_t>(count));
-  constexpr double atBound = 0.98;  // scaled units; tanh's slope there is under 4 %
-  std::vector<int> atLower(policyActionSize, 0), atUpper(policyActionSize, 0);
-  for (int i = 0; i < count; ++i) {
-    const EpisodeTask task = environment.draw(seed, static_cast<std::uint64_t>(i));
-    std::vector<double> action = environment.defaultAction();
+    struct Row {
+      double oneShot = -1, best = -1;
+    };
+    std::vector<Row> rows(static_cast<std::size_t>(count));
+    constexpr double atBound = 0.98;  // scaled units; tanh's slope there is under 4 %
+    std::vector<int> atLower(policyActionSize, 0), atUpper(policyActionSize, 0);
+    for (int i = 0; i < count; ++i) {
+      const EpisodeTask task = environment.draw(seed, static_cast<std::uint64_t>(i));
+      std::vector<double> action = environment.defaultAction();
+      if (policy) {
+        PolicyState s;
+        std::copy(task.state.begin(), task.state.end(), s.begin());
+        const PolicyAction a = policy->act(s);
+        action.assign(a.begin(), a.end());
+        for (int k = 0; k < policyActionSize; ++k) {
+          atLower[static_cast<std::size_t>(k)] += a[static_cast<std::size_t>(k)] <= -atBound;
+          atUpper[static_cast<std::size_t>(k)] += a[static_cast<std::size_t>(k)] >= atBound;
+        }
+      }
+      Row& row = rows[static_cast<std::size_t>(i)];
+      row.oneShot = task.reward(action);
+      if (budget > 0) {
+        BoxProblem box;
+        box.lower = Eigen::VectorXd::Constant(policyActionSize, -1.0);
+        box.upper = Eigen::VectorXd::Constant(policyActionSize, 1.0);
+        OptimizerOptions options;
+        options.budget = budget;
+        options.seed = 1;
+        const std::vector<double> start = environment.defaultAction();
+        options.start = Eigen::Map<const Eigen::VectorXd>(start.data(), policyActionSize);
+        const PointObjective q = [&task](const Eigen::VectorXd& x) {
+          return task.reward(std::vector<double>(x.data(), x.data() + x.size()));
+        };
+        row.best = std::max(row.oneShot, optimize(box, evaluateInParallel(q, 0), options).bestValue);
+      }
+      std::fprintf(stderr, "passage %d: one-shot Q %.6f%s\n", i, row.oneShot,
+                   budget > 0 ? (", best " + std::to_string(row.best)).c_str() : "");
+    }
+
+    std::string csv = "passage,oneShotQ,bestQ,ratio\n";
+    std::vector<double> q, ratios;
+    int bothValid = 0;
+    for (int i = 0; i < count; ++i) {
+      const Row& r = rows[static_cast<std::size_t>(i)];
+      q.push_back(r.oneShot);
+      double ratio = -1;
+      if (budget > 0 && r.best > 0) {
+        ratio = r.oneShot > -1 ? r.oneShot / r.best : 0.0;
+        ratios.push_back(ratio);
+        bothValid += r.oneShot > -1;
+      }
+      char line[160];
+      std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g\n", i, r.oneShot, r.best, ratio);
+      csv += line;
+    }
+    const RewardSummary oneShot = summarizeRewards(q);
+    std::printf("%s on %d passages of stream %llu: mean reward %.6f, median %.6f, %d valid\n", which.c_str(), count,
+                static_cast<unsigned long long>(seed), oneShot.mean, oneShot.median, oneShot.valid);
     if (policy) {
-      PolicyState s;
-      std::copy(task.state.begin(), task.state.end(), s.begin());
-      const PolicyAction a = policy->act(s);
-      action.assign(a.begin(), a.end());
-      for (int k = 0; k < policyActionSize; ++k) {
-        atLower[static_cast<std::size_t>(k)] += a[static_cast<std::size_t>(k)] <= -atBound;
-        atUpper[static_cast<std::size_t>(k)] += a[static_cast<std::size_t>(k)] >= atBound;
+      std::printf("  actions at a bound (|a| >= %.2f) of %d passages:", atBound, count);
+      for (int k = 0; k < policyActionSize; ++k)
+        std::printf(" %s %d low %d high%s", MeshingParameters::names()[static_cast<std::size_t>(k)].c_str(),
+                    atLower[static_cast<std::size_t>(k)], atUpper[static_cast<std::size_t>(k)], k + 1 < policyActionSize ? ";" : "\n");
+    }
+    if (budget > 0)
+      std::printf("  against CMA-ES with %ld meshes from the defaults: %zu passages with a valid best; ratio "
+                  "one-shot / best: median %.4f, worst %.4f (an invalid one-shot mesh counts 0); %d both valid\n",
+                  budget, ratios.size(), summarizeRewards(ratios).median,
+                  ratios.empty() ? 0.0 : *std::min_element(ratios.begin(), ratios.end()), bothValid);
+    if (argc > 5) {
+      const std::filesystem::path out = argv[5];
+      writeFileAtomically(out, csv);
+      if (budget > 0) {
+        GnuplotRun plot;
+        std::filesystem::path png = out;
+        png.replace_extension(".png");
+        plot.run(gnuplotPngTerminal(900, 550) + plot.output(png) +
+                 "set datafile separator ','\nset grid\nset style fill solid 0.6\n"
+                 "set xlabel 'one-shot Q / best Q of CMA-ES (" + std::to_string(budget) +
+                 " meshes); invalid one-shot mesh = 0'\nset ylabel 'passages'\n"
+                 "set title '" + which + ": " + std::to_string(ratios.size()) +
+                 " sampler passages with a valid best mesh'\nset xrange [-0.025:1.075]\nset boxwidth 0.045\n"
+                 "bin(x) = 0.05 * floor(x / 0.05 + 0.5)\n"
+                 "plot " + gnuplotQuoted(out.string()) +
+                 " every ::1 using (bin($4)):(1.0) smooth frequency with boxes notitle\n");
       }
     }
-    Row& row = rows[static_cast<std::size_t>(i)];
-    row.oneShot = task.reward(action);
-    if (budget > 0) {
-      BoxProblem box;
-      box.lower = Eigen::VectorXd::Constant(policyActionSize, -1.0);
-      box.upper = Eigen::VectorXd::Constant(policyActionSize, 1.0);
-      OptimizerOptions options;
-      options.budget = budget;
-      options.seed = 1;
-      const std::vector<double> start = environment.defaultAction();
-      options.start = Eigen::Map<const Eigen::VectorXd>(start.data(), policyActionSize);
-      const PointObjective q = [&task](const Eigen::VectorXd& x) {
-        return task.reward(std::vector<double>(x.data(), x.data() + x.size()));
-      };
-      row.best = std::max(row.oneShot, optimize(box, evaluateInParallel(q, 0), options).bestValue);
-    }
-    std::fprintf(stderr, "passage %d: one-shot Q %.6f%s\n", i, row.oneShot,
-                 budget > 0 ? (", best " + std::to_string(row.best)).c_str() : "");
-  }
-
-  std::string csv = "passage,oneShotQ,bestQ,ratio\n";
-  std::vector<double> q, ratios;
-  int bothValid = 0;
-  for (int i = 0; i < count; ++i) {
-    const Row& r = rows[static_cast<std::size_t>(i)];
-    q.push_back(r.oneShot);
-    double ratio = -1;
-    if (budget > 0 && r.best > 0) {
-      ratio = r.oneShot > -1 ? r.oneShot / r.best : 0.0;
-      ratios.push_back(ratio);
-      bothValid += r.oneShot > -1;
-    }
-    char line[160];
-    std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g\n", i, r.oneShot, r.best, ratio);
-    csv += line;
-  }
-  const RewardSummary oneShot = summarizeRewards(q);
-  std::printf("%s on %d passages of stream %llu: mean reward %.6f, median %.6f, %d valid\n", which.c_str(), count,
-              static_cast<unsigned long long>(seed), oneShot.mean, oneShot.median, oneShot.valid);
-  if (policy) {
-    std::printf("  actions at a bound (|a| >= %.2f) of %d passages:", atBound, count);
-    for (int k = 0; k < policyActionSize; ++k)
-      std::printf(" %s %d low %d high%s", MeshingParameters::names()[static_cast<std::size_t>(k)].c_str(),
-                  atLower[static_cast<std::size_t>(k)], atUpper[static_cast<std::size_t>(k)], k + 1 < policyActionSize ? ";" : "\n");
-  }
-  if (budget > 0)
-    std::printf("  against CMA-ES with %ld meshes from the defaults: %zu passages with a valid best; ratio "
-                "one-shot / best: median %.4f, worst %.4f (an invalid one-shot mesh counts 0); %d both valid\n",
-                budget, ratios.size(), summarizeRewards(ratios).median,
-                ratios.empty() ? 0.0 : *std::min_element(ratios.begin(), ratios.end()), bothValid);
-  if (argc > 5) {
-    const std::filesystem::path out = argv[5];
-    writeFileAtomically(out, csv);
-    if (budget > 0) {
-      GnuplotRun plot;
-      std::filesystem::path png = out;
-      png.replace_extension(".png");
-      plot.run(gnuplotPngTerminal(900, 550) + plot.output(png) +
-               "set datafile separator ','\nset grid\nset style fill solid 0.6\n"
-               "set xlabel 'one-shot Q / best Q of CMA-ES (" + std::to_string(budget) +
-               " meshes); invalid one-shot mesh = 0'\nset ylabel 'passages'\n"
-               "set title '" + which + ": " + std::to_string(ratios.size()) +
-               " sampler passages with a valid best mesh'\nset xrange [-0.025:1.075]\nset boxwidth 0.045\n"
-               "bin(x) = 0.05 * floor(x / 0.05 + 0.5)\n"
-               "plot " + gnuplotQuoted(out.string()) +
-               " every ::1 using (bin($4)):(1.0) smooth frequency with boxes notitle\n");
-    }
-  }
-  return 0;
+    return 0;
+  });
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/mesh/HohMesh.hpp"
 #include "passageMesh/passage/PassageCase.hpp"
 #include "passageMesh/policy/Policy.hpp"
@@ -28,32 +29,35 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char* argv[]) {
-  if (argc < 3) {
-    std::fprintf(stderr, "usage: policyMeshBenchmark POLICY.xml CASE_DIR [REPEATS]\n");
-    return 2;
-  }
-  const Policy policy = Policy::load(argv[1]);
-  const PassageCase input = readPassageCase(argv[2], "policyMeshBenchmark");
-  const int repeats = argc > 3 ? std::stoi(argv[3]) : 5;
-  const BladeParameters& blade = input.blade.parameters();
+  // A missing or corrupt file ends in one line on stderr and exit code 1, not a crash.
+  return runUtility("policyMeshBenchmark", [&] {
+    if (argc < 3) {
+      std::fprintf(stderr, "usage: policyMeshBenchmark POLICY.xml CASE_DIR [REPEATS]\n");
+      return 2;
+    }
+    const Policy policy = Policy::load(argv[1]);
+    const PassageCase input = readPassageCase(argv[2], "policyMeshBenchmark");
+    const int repeats = argc > 3 ? std::stoi(argv[3]) : 5;
+    const BladeParameters& blade = input.blade.parameters();
 
-  std::vector<double> forward;
-  for (int r = 0; r < 1000; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    const MeshingParameters p = meshingParametersOf(policy.act(policyState(blade, input.condition)), blade.chord);
-    forward.push_back(seconds(start));
-    if (p.nT < 0) return 1;  // keeps the call from being optimised away
-  }
-  std::vector<double> whole;
-  double q = 0;
-  for (int r = 0; r < repeats; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    const MeshingParameters p = meshingParametersOf(policy.act(policyState(blade, input.condition)), blade.chord);
-    const HohMesh hoh = buildHohMesh(input.blade, input.condition, p);
-    q = hoh.valid ? computeMeshQuality(hoh.mesh).Q : invalidMeshQuality;
-    whole.push_back(seconds(start));
-  }
-  std::printf("%s on %s (nO %d): forward pass median %.3f ms; forward + mesh + Q median %.1f ms (%d runs); Q %.17g\n",
-              argv[1], argv[2], input.condition.nO, 1e3 * median(forward), 1e3 * median(whole), repeats, q);
-  return 0;
+    std::vector<double> forward;
+    for (int r = 0; r < 1000; ++r) {
+      const auto start = std::chrono::steady_clock::now();
+      const MeshingParameters p = meshingParametersOf(policy.act(policyState(blade, input.condition)), blade.chord);
+      forward.push_back(seconds(start));
+      if (p.nT < 0) return 1;  // keeps the call from being optimised away
+    }
+    std::vector<double> whole;
+    double q = 0;
+    for (int r = 0; r < repeats; ++r) {
+      const auto start = std::chrono::steady_clock::now();
+      const MeshingParameters p = meshingParametersOf(policy.act(policyState(blade, input.condition)), blade.chord);
+      const HohMesh hoh = buildHohMesh(input.blade, input.condition, p);
+      q = hoh.valid ? computeMeshQuality(hoh.mesh).Q : invalidMeshQuality;
+      whole.push_back(seconds(start));
+    }
+    std::printf("%s on %s (nO %d): forward pass median %.3f ms; forward + mesh + Q median %.1f ms (%d runs); Q %.17g\n",
+                argv[1], argv[2], input.condition.nO, 1e3 * median(forward), 1e3 * median(whole), repeats, q);
+    return 0;
+  });
 }
