@@ -1,10 +1,10 @@
 #include "passageMesh/passage/PassageCondition.hpp"
 
-#include "passageMesh/core/Dictionary.hpp"
-#include "passageMesh/core/InputError.hpp"
-
 #include <iomanip>
 #include <sstream>
+
+#include "passageMesh/core/Dictionary.hpp"
+#include "passageMesh/core/InputError.hpp"
 
 namespace passageMesh {
 
