@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "../TestFiles.hpp"
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/policy/Policy.hpp"
 #include "passageMesh/policy/ToyEnvironment.hpp"
 
 using namespace passageMesh;
@@ -147,13 +149,18 @@ TEST(PolicyTrainer, TheValidationScoresTheActionsOfOneStateForwardPasses) {
   PolicyTrainer trainer(o, toy, rollouts);
   ASSERT_TRUE(trainer.run(nullptr, {}));
   ASSERT_EQ(trainer.validationCurve().size(), 1u);
+  // Through the files, as policyMesh reads them.
+  const auto dir = testData::tempFolder("validationOneState");
+  std::filesystem::create_directories(dir);
+  writePolicyFiles(dir / "policy.xml", trainer.learner(), PolicyProvenance{});
+  const Policy policy = Policy::load(dir / "policy.xml");
   double sum = 0;
   for (int i = 0; i < o.validationPassages; ++i) {
     const EpisodeTask task = toy.draw(o.validationSeed, static_cast<std::uint64_t>(i));
-    PolicyBatch state(1, 24);
-    for (int k = 0; k < 24; ++k) state(0, k) = task.state[static_cast<std::size_t>(k)];
-    const PolicyBatch action = trainer.learner().act(state);
-    sum += task.reward(std::vector<double>(action.data(), action.data() + action.size()));
+    PolicyState state;
+    std::copy(task.state.begin(), task.state.end(), state.begin());
+    const PolicyAction action = policy.act(state);
+    sum += task.reward(std::vector<double>(action.begin(), action.end()));
   }
   EXPECT_EQ(trainer.validationCurve()[0].meanReward, sum / o.validationPassages);
 }
