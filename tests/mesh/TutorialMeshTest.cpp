@@ -194,3 +194,33 @@ TEST(TutorialMeshBlend, TheRowsNextToASharpEdgeStayUnfoldedAtTheFirstBlend) {
     EXPECT_TRUE(computeMeshQuality(hoh.mesh).valid);
   }
 }
+
+// STD10's sharp trailing edge (radius 6e-6 m, under the first cell height) at the meshing
+// parameters the shipped policy chose for it (2026-12-03). The outer and wall control
+// values are found on a copy of the O-block with fewer nodes around the loop. When that
+// copy took every other fine node (repeatedly), an odd loop put a single-interval step at
+// the edge, and which nodes next to the tip it kept changed with nT mod 8: Q 0.596 / 0.536
+// at nT 333 / 334, and the smoothed lines folded at 335. Resampled evenly in the loop
+// index with the edges among its nodes (EllipticSmoother.hpp), Q moves by about 0.001 per
+// step here (docs/elliptic-smoothing.md, "A control grid resampled in the loop index").
+TEST(TutorialMeshSharpEdge, QualityDoesNotJumpWithTheParityOfTheCountsAtASharpTrailingEdge) {
+  const auto [blade, chord, condition] = loadTutorial("STD10");
+  MeshingParameters p = MeshingParameters::defaults(chord);
+  p.yIn = 0.006110814498429526;
+  p.yOut = -0.010684594407324374;
+  p.alphaCamber = 1;
+  p.betaIn = 0.43918633460998535;
+  p.betaOut = 0.74065070152282719;
+  p.gammaLe = 0.96422687172889709;
+  p.gammaTe = 2.944103442132473;
+  double previous = 0;
+  for (int nT = 328; nT <= 340; ++nT) {
+    p.nT = nT;
+    const HohMesh hoh = buildHohMesh(blade, condition, p);
+    ASSERT_TRUE(hoh.valid) << "nT " << nT << ": " << hoh.problem;
+    const double q = computeMeshQuality(hoh.mesh).Q;
+    if (nT > 328) EXPECT_LT(std::abs(q - previous), 0.005) << "nT " << nT - 1 << " -> " << nT;
+    EXPECT_GT(q, 0.59) << "nT " << nT;
+    previous = q;
+  }
+}

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "passageMesh/mesh/GridCoarsening.hpp"
 #include "passageMesh/mesh/ThompsonMultigrid.hpp"
 
 namespace passageMesh {
@@ -90,19 +89,21 @@ struct Controls {
   // lines at the outer loop: they arrive at the angle the interior gives them).
   bool outerOrthogonal = true;
   // The periodic segments whose lines continue through the image (none: all square), in
-  // the fine grid's loop indices; a loop node i of the grid the values are iterated on is
-  // fine node i * loopStep.
+  // the fine grid's loop indices; loop node i of the grid the values are iterated on is
+  // fine node fineIndex[i] (i = 0 .. n; empty: the fine grid itself).
   std::optional<PeriodicOuterSegments> periodic;
   double continuationBlend = 0;
-  int loopStep = 1;
+  std::vector<double> fineIndex;
 
   Controls(const StructuredBlock& o, const EllipticOptions& options,
-           const std::optional<PeriodicOuterSegments>& segments, int step)
+           const std::optional<PeriodicOuterSegments>& segments, std::vector<double> fineIndices)
       : wallOrthogonal(options.wallOrthogonality),
         outerOrthogonal(options.outerOrthogonality),
         periodic(options.periodicContinuation ? segments : std::nullopt),
         continuationBlend(options.periodicContinuationBlend),
-        loopStep(step) {
+        fineIndex(std::move(fineIndices)) {
+    if (fineIndex.empty())
+      for (int i = 0; i < o.ni; ++i) fineIndex.push_back(i);
     const int n = o.ni - 1, J = o.nj - 1;
     wallPhi = loopDistributionControl(o, 0);
     linePsi.assign(static_cast<std::size_t>(n) * o.nj, 0.0);
@@ -142,13 +143,14 @@ struct Controls {
     const double intervals = p.lowerEnd - p.lowerBegin;
     // Row J - 1 at a fine loop index, linear between this grid's nodes.
     auto innerAt = [&](double fine) {
-      const double c = fine / loopStep;
-      const int i0 = static_cast<int>(std::floor(c));
-      const double f = c - i0;
-      return Eigen::Vector2d((1 - f) * nodeAt(g, i0 % n, J - 1) + f * nodeAt(g, (i0 + 1) % n, J - 1));
+      const int i0 = std::clamp(static_cast<int>(std::upper_bound(fineIndex.begin(), fineIndex.end(), fine) -
+                                                 fineIndex.begin()) - 1, 0, n - 1);
+      const double f = (fine - fineIndex[static_cast<std::size_t>(i0)]) /
+                       (fineIndex[static_cast<std::size_t>(i0 + 1)] - fineIndex[static_cast<std::size_t>(i0)]);
+      return Eigen::Vector2d((1 - f) * nodeAt(g, i0, J - 1) + f * nodeAt(g, (i0 + 1) % n, J - 1));
     };
     for (int i = 0; i < n; ++i) {
-      const double fine = static_cast<double>(i) * loopStep;
+      const double fine = fineIndex[static_cast<std::size_t>(i)];
       const bool lower = fine > p.lowerBegin && fine < p.lowerEnd;
       const bool upper = fine > p.upperBegin && fine < p.upperEnd;
       if (!lower && !upper) continue;
@@ -237,58 +239,110 @@ ThompsonReport solveWithOuterControl(StructuredBlock& o, Controls& c, const Elli
   return solveThompson(o, control, single, update);
 }
 
-// Finds the outer control values on a coarse copy of `o` and returns them for `o`'s loop;
-// moves `o`'s nodes by the coarse solve's displacement (a start for the full solve).
-int outerControlFromCoarseGrid(StructuredBlock& o, Controls& fine, const EllipticOptions& options,
-                               const std::optional<PeriodicOuterSegments>& periodic) {
-  std::vector<StructuredBlock> initial{o};
-  std::vector<Coarsening> steps;
-  while (initial.back().ni - 1 > options.controlGridLoop) {
-    // Around the loop only: psi, the spacing control along the lines, does not carry
-    // over between grids with other rows (measured: the first cells then grew 4-fold).
-    const Coarsening c = coarseningOf(initial.back(), movingRows(o, options), 8, 1 << 30);
-    if (!c.any()) break;
-    steps.push_back(c);
-    initial.push_back(coarseBlock(initial.back(), c));
+// The fine loop index t of each node I = 0 .. nc of the control grid: evenly spaced,
+// t = I n / nc, and where a leading edge is given (fine loop node `leadingEdge` > 0) bent
+// smoothly so that it is a node too: t = I n / nc + d sin^2(pi I / nc) / sin^2(pi L / nc),
+// with L its nearest control node and d the shift that puts L on it (at most half an
+// interval). The trailing edge (t = 0, the seam) stays a node with the slope the same on
+// both sides, so that the grid is symmetric about it.
+std::vector<double> controlGridIndices(int n, int nc, int leadingEdge) {
+  const double r = static_cast<double>(n) / nc;
+  const int L = static_cast<int>(std::lround(leadingEdge / r));
+  const bool bend = leadingEdge > 0 && L > 0 && L < nc;
+  const double pi = 3.14159265358979323846;
+  const double d = bend ? leadingEdge - r * L : 0.0, norm = bend ? std::pow(std::sin(pi * L / nc), 2) : 1.0;
+  std::vector<double> t(static_cast<std::size_t>(nc + 1));
+  for (int I = 0; I <= nc; ++I) t[static_cast<std::size_t>(I)] = r * I + d * std::pow(std::sin(pi * I / nc), 2) / norm;
+  if (bend) t[static_cast<std::size_t>(L)] = leadingEdge;  // exactly, not to rounding
+  t.front() = 0;
+  t.back() = n;
+  return t;
+}
+
+// `o` resampled around the loop at the fine loop indices t (increasing, t[0] = 0, the last
+// n: the seam), each row's node linear between the fine nodes either side of t.
+StructuredBlock resampledAroundLoop(const StructuredBlock& o, const std::vector<double>& t) {
+  const int n = o.ni - 1;
+  StructuredBlock c = o;
+  c.ni = static_cast<int>(t.size());
+  c.x.assign(static_cast<std::size_t>(c.ni) * o.nj, 0.0);
+  c.y.assign(c.x.size(), 0.0);
+  for (int j = 0; j < o.nj; ++j)
+    for (int I = 0; I < c.ni; ++I) {
+      const int i0 = std::min(static_cast<int>(t[static_cast<std::size_t>(I)]), n - 1);
+      const double f = t[static_cast<std::size_t>(I)] - i0;
+      c.xAt(I, j) = (1 - f) * o.xAt(i0, j) + f * o.xAt(i0 + 1, j);
+      c.yAt(I, j) = (1 - f) * o.yAt(i0, j) + f * o.yAt(i0 + 1, j);
+    }
+  return c;
+}
+
+// A per-node value of the control grid's loop (t.size() - 1 values) at the fine loop's n
+// nodes, linear in t.
+std::vector<double> fromControlGrid(const std::vector<double>& coarse, const std::vector<double>& t, int n) {
+  const int nc = static_cast<int>(coarse.size());
+  std::vector<double> fine(static_cast<std::size_t>(n));
+  std::size_t I = 0;
+  for (int i = 0; i < n; ++i) {
+    while (I + 1 < t.size() - 1 && t[I + 1] <= i) ++I;
+    const double f = (i - t[I]) / (t[I + 1] - t[I]);
+    fine[static_cast<std::size_t>(i)] =
+        (1 - f) * coarse[I] + f * coarse[(I + 1) % static_cast<std::size_t>(nc)];
   }
-  StructuredBlock coarsest = initial.back();
-  int loopStep = 1;
-  for (const Coarsening& c : steps) loopStep *= c.i ? 2 : 1;
-  Controls controls(coarsest, options, periodic, loopStep);
-  const ThompsonReport r = solveWithOuterControl(coarsest, controls, options,
+  return fine;
+}
+
+// Finds the outer (and wall) control values on a copy of `o` resampled around the loop at
+// at most options.controlGridLoop nodes, the blade's edges among them (all rows kept: psi,
+// the spacing control along the lines, does not carry over between grids with other rows;
+// measured: the first cells then grew 4-fold), and returns them for `o`'s loop; moves
+// `o`'s nodes by the coarse solve's displacement (a start for the full solve).
+// The control grid used to take every other fine node, repeatedly: an odd loop then had a
+// single-interval step, and which nodes next to a sharp edge the coarse grid held changed
+// with n mod 8 (docs/elliptic-smoothing.md, "A control grid resampled in the loop index").
+int outerControlFromCoarseGrid(StructuredBlock& o, Controls& fine, const EllipticOptions& options,
+                               const std::optional<PeriodicOuterSegments>& periodic, int leadingEdge) {
+  const int n = o.ni - 1;
+  const std::vector<double> t = controlGridIndices(n, std::min(n, options.controlGridLoop), leadingEdge);
+  const int nc = static_cast<int>(t.size()) - 1;
+  const StructuredBlock initial = resampledAroundLoop(o, t);
+  StructuredBlock coarse = initial;
+  Controls controls(coarse, options, periodic, t);
+  const ThompsonReport r = solveWithOuterControl(coarse, controls, options,
                                                  options.controlMaxSweeps, options.controlTolerance);
   if (!std::isfinite(r.residual)) return r.sweeps;
-  // Back up the levels: displacement and outer control values, halved per coarsened
-  // direction (they are per index step).
-  StructuredBlock solved = coarsest;
-  std::vector<double> dx, dy;
-  // The boundary values carried up, each with whether it is a phi (per i step) or a psi.
-  std::vector<std::pair<std::vector<double>*, bool>> carried{{&controls.outerPhi, true},
-                                                             {&controls.outerPsi, false}};
-  if (controls.wallOrthogonal) {
-    carried.emplace_back(&controls.wallPhi, true);
-    carried.emplace_back(&controls.wallPsi, false);
-  }
-  for (std::size_t l = steps.size(); l-- > 0;) {
-    StructuredBlock finer = initial[l];
-    interpolateDisplacement(initial[l + 1], solved, steps[l], finer, movingRows(o, options), dx, dy);
-    for (std::size_t k = 0; k < finer.x.size(); ++k) {
-      finer.x[k] += dx[k];
-      finer.y[k] += dy[k];
+  // The displacement, and the boundary control values. psi is per row and carries over
+  // as it is; phi is per loop index step: phi_fine = phi / t' + t'' / t'^2 at the control
+  // grid's nodes (t' and t'' of the index map).
+  const MovingRows rows = movingRows(o, options);
+  std::vector<double> dx(static_cast<std::size_t>(nc)), dy(dx.size());
+  for (int j = rows.first(); j <= rows.last(o); ++j) {
+    for (int I = 0; I < nc; ++I) {
+      dx[static_cast<std::size_t>(I)] = coarse.xAt(I, j) - initial.xAt(I, j);
+      dy[static_cast<std::size_t>(I)] = coarse.yAt(I, j) - initial.yAt(I, j);
     }
-    for (auto& [values, isPhi] : carried) {
-      *values = interpolateAroundLoop(*values, steps[l], finer.ni - 1);
-      const bool halve = isPhi ? steps[l].i : steps[l].j;
-      for (auto& v : *values) v *= halve ? 0.5 : 1.0;
+    const std::vector<double> fx = fromControlGrid(dx, t, n), fy = fromControlGrid(dy, t, n);
+    for (int i = 0; i < n; ++i) {
+      o.xAt(i, j) += fx[static_cast<std::size_t>(i)];
+      o.yAt(i, j) += fy[static_cast<std::size_t>(i)];
     }
-    solved = std::move(finer);
+    o.xAt(n, j) = o.xAt(0, j);
+    o.yAt(n, j) = o.yAt(0, j);
   }
-  o = solved;
-  fine.outerPhi = controls.outerPhi;
-  fine.outerPsi = controls.outerPsi;
+  auto phiToFine = [&](std::vector<double> phi) {
+    for (int I = 0; I < nc; ++I) {
+      const double before = I > 0 ? t[static_cast<std::size_t>(I - 1)] : t[static_cast<std::size_t>(nc - 1)] - n;
+      const double at = t[static_cast<std::size_t>(I)], after = t[static_cast<std::size_t>(I + 1)];
+      const double slope = 0.5 * (after - before), second = after - 2 * at + before;
+      phi[static_cast<std::size_t>(I)] = phi[static_cast<std::size_t>(I)] / slope + second / (slope * slope);
+    }
+    return fromControlGrid(phi, t, n);
+  };
+  fine.outerPhi = phiToFine(controls.outerPhi);
+  fine.outerPsi = fromControlGrid(controls.outerPsi, t, n);
   if (fine.wallOrthogonal) {
-    fine.wallPhi = controls.wallPhi;
-    fine.wallPsi = controls.wallPsi;
+    fine.wallPhi = phiToFine(controls.wallPhi);
+    fine.wallPsi = fromControlGrid(controls.wallPsi, t, n);
   }
   return r.sweeps;
 }
@@ -296,16 +350,16 @@ int outerControlFromCoarseGrid(StructuredBlock& o, Controls& fine, const Ellipti
 }  // namespace
 
 EllipticReport smoothOBlock(StructuredBlock& o, const EllipticOptions& options,
-                            const std::optional<PeriodicOuterSegments>& periodic) {
+                            const std::optional<PeriodicOuterSegments>& periodic, int leadingEdge) {
   if (o.ni - 1 < 3 || o.nj < 4) throw std::invalid_argument("smoothOBlock: block too small");
-  Controls controls(o, options, periodic, 1);  // from the algebraic grid, before anything moves
+  Controls controls(o, options, periodic, {});  // from the algebraic grid, before anything moves
   EllipticReport report;
   if (!options.multigrid) {
     const ThompsonReport r =
         solveWithOuterControl(o, controls, options, options.maxSweeps, options.tolerance);
     return {r.sweeps, 0, r.residual, r.converged};
   }
-  report.controlSweeps = outerControlFromCoarseGrid(o, controls, options, periodic);
+  report.controlSweeps = outerControlFromCoarseGrid(o, controls, options, periodic, leadingEdge);
   GridControl control;
   controls.blendInto(control, o.nj);
   MultigridOptions mg;

@@ -153,7 +153,9 @@ void buildBlocks(HohMesh& result, const std::vector<BladeNode>& wall, const Oute
     const PeriodicOuterSegments periodic{outer.lowerPeriodicBegin(), outer.lowerPeriodicEnd(),
                                          outer.upperPeriodicBegin(), outer.upperPeriodicEnd(),
                                          Eigen::Vector2d(0, condition.pitch)};
-    result.smoothing = smoothOBlock(lines, options.elliptic, periodic);
+    // The control values are found on a grid that keeps both edges (EllipticSmoother.hpp).
+    const int leadingEdge = outer.lowerPeriodicEnd() + outer.inletLower;  // the wall's lower intervals
+    result.smoothing = smoothOBlock(lines, options.elliptic, periodic, leadingEdge);
     if (!std::isfinite(result.smoothing.residual)) {
       result.problem = "O-block: the elliptic smoothing diverged";
       return;

@@ -14,7 +14,8 @@
 //               the outer loop: the values that make the boundary rows' equations hold for
 //               lines leaving the boundary orthogonally with the initial spacing there.
 //               They depend on the grid they shape, so they are found by under-relaxed
-//               iteration together with the grid, on a coarse copy of the O-block (cheap,
+//               iteration together with the grid, on a copy of the O-block resampled at
+//               fewer nodes around the loop (cheap,
 //               and this coupled iteration is only stable with slowly converging sweeps),
 //               then carried to the full grid.
 // With wallOrthogonality off (the first tool's setting, for wall-clustered grids whose
@@ -62,12 +63,13 @@ struct EllipticOptions {
   int maxCycles = 100;              // multigrid V-cycles
   int maxSweeps = 5000;             // single-grid sweeps on the full grid
   double lineRelaxation = 1.3;      // line over-relaxation of the single-grid solves
-  // The outer control values: solved on the grid coarsened around the loop until it has at
-  // most this many nodes (all rows kept), to this residual or for at most this many sweeps
+  // The outer control values: solved on the O-block resampled around the loop at this many
+  // nodes (fewer when the loop has fewer; all rows kept; the trailing and leading edges
+  // among them; 40, 48, 60, 72 and 80 measured: docs/elliptic-smoothing.md), to this residual or for at most this many sweeps
   // (then taken as they are), each sweep moving them this fraction of the way to the values
   // the outer row asks for (0.2 diverged on the tutorials), clipped to this size (above 2
   // the line systems lose diagonal dominance).
-  int controlGridLoop = 80;
+  int controlGridLoop = 60;
   double controlTolerance = 1e-4;
   int controlMaxSweeps = 400;
   double controlRelaxation = 0.05;
@@ -91,7 +93,11 @@ struct PeriodicOuterSegments {
 
 // `oBlock`: ni = nT + 1 (seam repeated), nj >= 4 rows, as buildHohMesh makes it.
 // `periodic`: the outer loop's periodic segments (none: every outer line arrives square).
+// `leadingEdge`: the leading edge's loop node (0: none given). The grid the control values
+// are found on (options.controlGridLoop) has the trailing edge (i = 0) and the leading
+// edge among its nodes.
 EllipticReport smoothOBlock(StructuredBlock& oBlock, const EllipticOptions& options = {},
-                            const std::optional<PeriodicOuterSegments>& periodic = std::nullopt);
+                            const std::optional<PeriodicOuterSegments>& periodic = std::nullopt,
+                            int leadingEdge = 0);
 
 }  // namespace passageMesh
