@@ -62,8 +62,8 @@ TEST(PassageDict, RefusesImpossibleValuesAndMissingKeys) {
 TEST(MeshDict, MissingFileGivesDefaultsAndOutOfRangeIsClippedWithAWarning) {
   const auto none = std::filesystem::temp_directory_path() / "passageMeshNoSuchMeshDict.xml";
   EXPECT_EQ(readMeshDict(none, 0.1).toArray(), MeshingParameters::defaults(0.1).toArray());
-  // The struct's initialisers mirror etc/meshDictDefaults.xml.
-  EXPECT_EQ(MeshingParameters().toArray(), MeshingParameters::defaults(0.1).toArray());
+  // The struct's initialisers mirror etc/meshDictDefaults.xml for a chord of 1 m.
+  EXPECT_EQ(MeshingParameters().toArray(), MeshingParameters::defaults(1.0).toArray());
   std::vector<std::string> warnings;
   const auto p = readMeshDict(
       writeTemp("m.xml", "<meshDict><betaIn>0.95</betaIn><yIn>0.2c</yIn><nT>400</nT></meshDict>"), 0.1,

@@ -17,6 +17,11 @@ bool EvaluationLog::stopRequested() const {
 }
 
 Eigen::VectorXd EvaluationLog::evaluatedPoint(const Eigen::VectorXd& unitPoint) const {
+  // The start as the caller gave it: the round trip through the unit cube can move a value
+  // by an ulp (yOut = -0.01 C of the defaults did), and the first evaluation must be the
+  // start itself.
+  if (options_.start && unitPoint == problem_.toUnit(*options_.start))
+    return problem_.evaluatedPoint(*options_.start);
   return problem_.evaluatedPoint(problem_.fromUnit(unitPoint));
 }
 

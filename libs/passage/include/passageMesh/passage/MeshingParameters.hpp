@@ -21,16 +21,17 @@ struct MeshingParameters {
   static constexpr int size = 8;
 
   double yIn = 0;           // vertical offset of the periodic boundary at the inlet [m]
-  double yOut = 0;          // ... at the outlet [m]
-  double alphaCamber = 1;   // how much the periodic boundary follows the camber line
-  double betaIn = 0.5;      // O/H interface position as a fraction of xIn
-  double betaOut = 0.5;     // ... of xOut
-  int nT = 300;             // O-block nodes around the blade
-  double gammaLe = 3;       // node clustering towards the leading edge (0 = none)
+  double yOut = -0.01;      // ... at the outlet [m]
+  double alphaCamber = 0.98;  // how much the periodic boundary follows the camber line
+  double betaIn = 0.492;    // O/H interface position as a fraction of xIn
+  double betaOut = 0.508;   // ... of xOut
+  int nT = 372;             // O-block nodes around the blade
+  double gammaLe = 2.95;    // node clustering towards the leading edge (0 = none)
   double gammaTe = 3;       // ... towards the trailing edge
 
   // The defaults of etc/meshDictDefaults.xml for a blade of the given chord (the member
-  // initialisers above mirror that file; a test keeps the two equal).
+  // initialisers above mirror that file for a chord of 1 m, where its lengths in chords
+  // are metres; a test keeps the two equal).
   static MeshingParameters defaults(double chord);
   // In the order above; nT as a double.
   std::array<double, size> toArray() const;
