@@ -9,12 +9,12 @@
 //                                  [tutorialFloor=0]
 //
 // An invalid mesh (or a periodic boundary through the blade) counts as Q = -1, so the
-// median also rewards parameter sets that mesh more passages. A set that leaves any of
-// the four tutorials (at their passageDict) without a valid mesh scores -1 as a whole:
-// the defaults are what the tutorials mesh with (tutorialFloor < 0: the tutorials are not
-// meshed at all), and so does one that leaves any tutorial at pitch 0.3, 0.5, 0.75 or 1
-// chord and nO 10000, 30000 or 50000 without a mesh where its periodic boundaries clear
-// the blade (issue 11's validity must-show; since 2026-12-04). A tutorial's Q below tutorialFloor costs the median ten times the
+// median also rewards parameter sets that mesh more passages. A set scores -1 as a whole
+// when it leaves any of the four tutorials (at their passageDict) without a valid mesh
+// (the defaults are what the tutorials mesh with), or any tutorial at pitch 0.3, 0.5, 0.75
+// or 1 chord and nO 10000, 30000 or 50000 where its periodic boundaries clear the blade
+// (issue 11's validity must-show; since 2026-12-04). tutorialFloor < 0: the tutorials are
+// not meshed at all. A tutorial's Q below tutorialFloor costs the median ten times the
 // shortfall (issue 11 asks for Q >= 0.60 on every tutorial at the defaults; a penalty,
 // not a cliff, so that the optimiser sees which way the floor lies). Runs before
 // 2026-12-04 passed keepTutorialsValid = 1 here, which is tutorialFloor 0. Prints the

@@ -65,7 +65,8 @@ struct EllipticOptions {
   double lineRelaxation = 1.3;      // line over-relaxation of the single-grid solves
   // The outer control values: solved on the O-block resampled around the loop at this many
   // nodes (fewer when the loop has fewer; all rows kept; the trailing and leading edges
-  // among them; 40, 48, 60, 72 and 80 measured: docs/elliptic-smoothing.md), to this residual or for at most this many sweeps
+  // among them; 40, 48, 60, 72 and 80 measured: docs/elliptic-smoothing.md), to this
+  // residual or for at most this many sweeps
   // (then taken as they are), each sweep moving them this fraction of the way to the values
   // the outer row asks for (0.2 diverged on the tutorials), clipped to this size (above 2
   // the line systems lose diagonal dominance).
