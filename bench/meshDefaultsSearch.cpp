@@ -152,14 +152,11 @@ int main(int argc, char** argv) {
     for (const auto& v : points) {
       const auto tq = meshTutorials ? qualities(tutorials, v, threads) : std::vector<double>{};
       const bool tutorialInvalid = std::any_of(tq.begin(), tq.end(), [](double q) { return q <= invalidMeshQuality; });
+      const bool rejected = tutorialInvalid || (meshTutorials && unmeshedPassages(variants, v, threads) > 0);
       double shortfall = 0;
       for (double q : tq) shortfall += std::max(0.0, tutorialFloor - q);
-      if (!tutorialInvalid && meshTutorials && unmeshedPassages(variants, v, threads) > 0) {
-        values.push_back(invalidMeshQuality);
-        continue;
-      }
-      values.push_back(tutorialInvalid ? invalidMeshQuality
-                                       : quantile(qualities(passages, v, threads), 0.5) - 10 * shortfall);
+      values.push_back(rejected ? invalidMeshQuality
+                                : quantile(qualities(passages, v, threads), 0.5) - 10 * shortfall);
     }
     return values;
   };

@@ -208,14 +208,10 @@ TEST(TutorialMeshBlend, TheRowsNextToASharpEdgeStayUnfoldedAtTheFirstBlend) {
 // step here (docs/elliptic-smoothing.md, "A control grid resampled in the loop index").
 TEST(TutorialMeshSharpEdge, QualityDoesNotJumpWithTheParityOfTheCountsAtASharpTrailingEdge) {
   const auto [blade, chord, condition] = loadTutorial("STD10");
-  MeshingParameters p = MeshingParameters::defaults(chord);
-  p.yIn = 0.006110814498429526;
-  p.yOut = -0.010684594407324374;
-  p.alphaCamber = 1;
-  p.betaIn = 0.43918633460998535;
-  p.betaOut = 0.74065070152282719;
-  p.gammaLe = 0.96422687172889709;
-  p.gammaTe = 2.944103442132473;
+  // yIn, yOut [m], alphaCamber, betaIn, betaOut, nT (set below), gammaLE, gammaTE.
+  MeshingParameters p = MeshingParameters::fromArray({0.006110814498429526, -0.010684594407324374, 1,
+                                                      0.43918633460998535, 0.74065070152282719, 328,
+                                                      0.96422687172889709, 2.944103442132473});
   double previous = 0;
   for (int nT = 328; nT <= 340; ++nT) {
     p.nT = nT;
