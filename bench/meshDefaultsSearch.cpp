@@ -46,18 +46,28 @@ MeshingParameters forChord(const Eigen::VectorXd& v, double chord) {
   return p;
 }
 
-// Q of each passage (a PassageDraw or a bench::TutorialPassage: anything with a blade and a
-// condition) meshed with the set; invalidMeshQuality where the mesh is invalid.
+// Meshes each passage (a PassageDraw or a bench::TutorialPassage: anything with a blade
+// and a condition) with the set, on `threads` threads, and keeps what `score` makes of
+// each mesh.
+template <class Passage, class Score>
+std::vector<double> scoreMeshes(const std::vector<Passage>& passages, const Eigen::VectorXd& v,
+                                int threads, Score score) {
+  std::vector<double> values(passages.size());
+  parallelFor(static_cast<int>(passages.size()), threads, [&](int k) {
+    const Passage& d = passages[static_cast<std::size_t>(k)];
+    values[static_cast<std::size_t>(k)] =
+        score(buildHohMesh(BladeShape(d.blade), d.condition, forChord(v, d.blade.chord)));
+  });
+  return values;
+}
+
+// Q of each passage meshed with the set; invalidMeshQuality where the mesh is invalid.
 template <class Passage>
 std::vector<double> qualities(const std::vector<Passage>& passages, const Eigen::VectorXd& v,
                               int threads) {
-  std::vector<double> q(passages.size());
-  parallelFor(static_cast<int>(passages.size()), threads, [&](int k) {
-    const Passage& d = passages[static_cast<std::size_t>(k)];
-    const HohMesh hoh = buildHohMesh(BladeShape(d.blade), d.condition, forChord(v, d.blade.chord));
-    q[static_cast<std::size_t>(k)] = hoh.valid ? computeMeshQuality(hoh.mesh).Q : invalidMeshQuality;
+  return scoreMeshes(passages, v, threads, [](const HohMesh& hoh) {
+    return hoh.valid ? computeMeshQuality(hoh.mesh).Q : invalidMeshQuality;
   });
-  return q;
 }
 
 // The tutorials at every pitch of the method's range (0.3, 0.5, 0.75, 1 chord) and nO
@@ -80,14 +90,10 @@ std::vector<bench::TutorialPassage> pitchAndNodeCountVariants(const std::vector<
 // boundaries clear the blade.
 long unmeshedPassages(const std::vector<bench::TutorialPassage>& passages, const Eigen::VectorXd& v,
                       int threads) {
-  std::vector<char> failed(passages.size(), 0);
-  parallelFor(static_cast<int>(passages.size()), threads, [&](int k) {
-    const auto& d = passages[static_cast<std::size_t>(k)];
-    const HohMesh hoh = buildHohMesh(BladeShape(d.blade), d.condition, forChord(v, d.blade.chord));
-    failed[static_cast<std::size_t>(k)] =
-        !hoh.valid && hoh.problem.find("periodic boundary cuts the blade") == std::string::npos;
+  const std::vector<double> failed = scoreMeshes(passages, v, threads, [](const HohMesh& hoh) {
+    return !hoh.valid && hoh.problem.find("periodic boundary cuts the blade") == std::string::npos ? 1.0 : 0.0;
   });
-  return std::count(failed.begin(), failed.end(), 1);
+  return std::count(failed.begin(), failed.end(), 1.0);
 }
 
 // Value at fraction f of the sorted values (0.5: the median).

@@ -8,7 +8,8 @@ namespace passageMesh::optimizeDetail {
 
 EvaluationLog::EvaluationLog(const BoxProblem& problem, const BatchObjective& objective,
                              const OptimizerOptions& options)
-    : problem_(problem), objective_(objective), options_(options) {
+    : problem_(problem), objective_(objective), options_(options),
+      unitStart_(options.start ? problem.toUnit(*options.start) : Eigen::VectorXd()) {
   history_.reserve(static_cast<std::size_t>(options.budget));
 }
 
@@ -20,7 +21,7 @@ Eigen::VectorXd EvaluationLog::evaluatedPoint(const Eigen::VectorXd& unitPoint) 
   // The start as the caller gave it: the round trip through the unit cube can move a value
   // by an ulp (yOut = -0.01 C of the defaults did), and the first evaluation must be the
   // start itself.
-  if (options_.start && unitPoint == problem_.toUnit(*options_.start))
+  if (options_.start && unitPoint == unitStart_)
     return problem_.evaluatedPoint(*options_.start);
   return problem_.evaluatedPoint(problem_.fromUnit(unitPoint));
 }

@@ -51,6 +51,7 @@ class EvaluationLog {
   const BoxProblem& problem_;
   const BatchObjective& objective_;
   const OptimizerOptions& options_;
+  Eigen::VectorXd unitStart_;  // options_.start in the unit cube (empty without a start)
   OptimizationHistory history_;
   long bestIndex_ = -1;
   bool stopped_ = false;
