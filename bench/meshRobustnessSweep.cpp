@@ -19,6 +19,7 @@
 #include "passageMesh/mesh/HohMesh.hpp"
 #include "passageMesh/passage/PassageBoundary.hpp"
 #include "passageMesh/passage/PassageSampler.hpp"
+#include "passageMesh/quality/MeshQuality.hpp"
 
 using namespace passageMesh;
 
@@ -29,6 +30,7 @@ struct Outcome {
   int sweeps = 0;
   double seconds = 0;
   double clearance = 0;  // chords
+  double quality = -1;   // Q of a valid mesh
   std::string problem;
 };
 
@@ -53,6 +55,8 @@ int main(int argc, char** argv) {
     out.converged = hoh.smoothing.converged;
     out.sweeps = hoh.smoothing.iterations;
     out.finite = hasOnlyFiniteCoordinates(hoh.mesh);
+    if (hoh.valid) out.quality = computeMeshQuality(hoh.mesh).Q;
+    out.problem = hoh.valid ? (hoh.retry.empty() ? "" : "meshed " + hoh.retry) : hoh.problem;
   });
   int valid = 0, notFinite = 0, notConverged = 0;
   double slowest = 0;
@@ -64,10 +68,10 @@ int main(int argc, char** argv) {
     notConverged += o.valid && !o.converged;
     slowest = std::max(slowest, o.seconds);
     std::printf("%4d pitch %.3f nO %5d nT %4d gammaLE %.2f gammaTE %.2f alpha %.2f clearance %6.3f: "
-                "%s %d sweeps %.2f s %s\n", k, d.condition.pitch / d.blade.chord, d.condition.nO,
+                "%s %d sweeps %.2f s Q %.4f %s\n", k, d.condition.pitch / d.blade.chord, d.condition.nO,
                 d.parameters.nT, d.parameters.gammaLe, d.parameters.gammaTe,
                 d.parameters.alphaCamber, o.clearance, o.valid ? "valid" : "INVALID", o.sweeps,
-                o.seconds, o.problem.c_str());
+                o.seconds, o.quality, o.problem.c_str());
   }
   // The draws with a passage (no periodic boundary through the blade: issue 11's
   // denominator, which counts an interface through the blade as a passage), by clearance.

@@ -6,8 +6,10 @@
 
 #include "../blade/BladeTestData.hpp"
 #include "../passage/PassageTestData.hpp"
+#include "passageMesh/mesh/MeshStatistics.hpp"
 #include "passageMesh/mesh/OuterLoop.hpp"
 #include "passageMesh/passage/PassageBoundary.hpp"
+#include "passageMesh/passage/PassageSampler.hpp"
 #include "passageMesh/structured/CgnsWriter.hpp"
 
 using namespace passageMesh;
@@ -149,4 +151,25 @@ TEST(HohMesh, SaysWhenAnInterfaceCutsTheBlade) {
   hoh = buildHohMesh(blade, c, m);
   EXPECT_FALSE(hoh.valid);
   EXPECT_NE(hoh.problem.find("the inlet interface (x = "), std::string::npos) << hoh.problem;
+}
+
+// Draw 475 of the robustness sweep (seed 20261122; clearance 0.06 chord): the wall's
+// orthogonality control crosses the smoothed lines' first rows, with or without the outer
+// loop's; the try without the wall's control meshes it, and the rows are still placed with
+// the first cell height exact.
+TEST(HohMesh, TriesWithoutTheWallsOrthogonalityWhereTheLinesFold) {
+  const PassageDraw d = samplePassages(500, 20261122)[475];
+  const BladeShape blade(d.blade);
+  HohMeshOptions without;
+  without.triesWithoutWallOrthogonality = false;
+  const HohMesh folded = buildHohMesh(blade, d.condition, d.parameters, without);
+  ASSERT_FALSE(folded.valid);
+  EXPECT_NE(folded.problem.find("fold"), std::string::npos) << folded.problem;
+
+  const HohMesh hoh = buildHohMesh(blade, d.condition, d.parameters);
+  ASSERT_TRUE(hoh.valid) << hoh.problem;
+  EXPECT_EQ(hoh.retry, "without orthogonality at the wall");
+  EXPECT_EQ(hoh.firstTryProblem, folded.problem);
+  const WallLayerStatistics wall = wallLayerStatistics(hoh.mesh.blocks[1], d.condition.firstCellHeight);
+  EXPECT_GE(wall.heightWithin2Percent, 0.95);
 }

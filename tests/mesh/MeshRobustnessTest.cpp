@@ -56,9 +56,10 @@ TEST(MeshRobustness, EveryRandomPassageEndsAsAValidMeshOrWithItsReason) {
   for (const auto& w : wrong) ADD_FAILURE() << w;
   // 51 of these 500 were valid when this test was written, 72 since the second try
   // without outer orthogonality, 84 since the wall blend in log distance, 88 since the
-  // control grid resampled in the loop index (docs/benchmarks.md); fewer means the mesher
-  // got less robust. Raise the floor when it gets better.
-  EXPECT_GE(valid.load(), 85) << "valid meshes among " << draws << " random passages";
+  // control grid resampled in the loop index, 94 since the tries without the wall's
+  // orthogonality (docs/benchmarks.md); fewer means the mesher got less robust. Raise the
+  // floor when it gets better.
+  EXPECT_GE(valid.load(), 91) << "valid meshes among " << draws << " random passages";
   std::printf("valid %d of %d random passages\n", valid.load(), draws);
 }
 

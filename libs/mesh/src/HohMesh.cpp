@@ -261,20 +261,39 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
   }
 
   buildBlocks(result, wall, outer, boundary, condition, options);
-  // Where the lines fold (or the solve diverges) with the outer loop's orthogonality
-  // control, a second try without it: the lines then arrive at the angle the interior
-  // gives them, which a tight passage (a periodic boundary close to the blade) or lines
-  // leaning far to reach their outer nodes need (docs/elliptic-smoothing.md, "Second try").
-  if (!result.valid && options.smooth && options.secondTryWithoutOuterOrthogonality &&
-      options.elliptic.outerOrthogonality) {
-    HohMeshOptions second = options;
-    second.elliptic.outerOrthogonality = false;
-    HohMesh retry;
-    retry.nN = result.nN;
-    buildBlocks(retry, wall, outer, boundary, condition, second);
-    if (retry.valid) {
+  // Where the lines fold (or the solve diverges), the mesh is built again asking less of
+  // the smoothing, and the first valid try is kept (docs/elliptic-smoothing.md, "Second
+  // try" and "Tries without the wall's orthogonality"): without the outer loop's
+  // orthogonality control (the lines arrive at the angle the interior gives them, which a
+  // tight passage or lines leaning far to reach their outer nodes need), then without the
+  // wall's (the lines leave the wall as the algebraic grid has them, where the wall control
+  // crosses the first rows next to a crowded edge), then without either.
+  if (!result.valid && options.smooth) {
+    std::vector<HohMeshOptions> tries;
+    auto add = [&](bool outerOrthogonality, bool wallOrthogonality) {
+      HohMeshOptions o = options;
+      o.elliptic.outerOrthogonality = outerOrthogonality;
+      o.elliptic.wallOrthogonality = wallOrthogonality;
+      tries.push_back(o);
+    };
+    const bool outerControl = options.elliptic.outerOrthogonality;
+    const bool wallControl = options.elliptic.wallOrthogonality;
+    if (options.secondTryWithoutOuterOrthogonality && outerControl) add(false, wallControl);
+    if (options.triesWithoutWallOrthogonality && wallControl) {
+      add(outerControl, false);
+      if (outerControl) add(false, false);
+    }
+    for (const HohMeshOptions& o : tries) {
+      HohMesh retry;
+      retry.nN = result.nN;
+      buildBlocks(retry, wall, outer, boundary, condition, o);
+      if (!retry.valid) continue;
       retry.firstTryProblem = result.problem;
+      retry.retry = std::string("without orthogonality at the ") +
+                    (o.elliptic.outerOrthogonality ? "wall"
+                     : o.elliptic.wallOrthogonality ? "outer loop" : "wall and the outer loop");
       result = std::move(retry);
+      break;
     }
   }
   return result;

@@ -25,7 +25,7 @@ HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& 
         // or too few rows to smooth
     std::printf("%s: O-block %d x %d nodes; not smoothed\n", tool.c_str(), parameters.nT, hoh.nN);
   if (!hoh.firstTryProblem.empty())
-    std::printf("  second try, without orthogonality at the outer loop: the first folded (%s)\n",
+    std::printf("  meshed by a later try, %s: the first folded (%s)\n", hoh.retry.c_str(),
                 hoh.firstTryProblem.c_str());
   if (hoh.valid && hoh.wallBlendLength > HohMeshOptions{}.wallBlendLength)
     std::printf("  rows placed with a wall blend of %g wall spacings: they folded with %g\n",

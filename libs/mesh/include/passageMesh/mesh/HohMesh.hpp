@@ -16,8 +16,8 @@
 // orthogonal at the wall and at the outer loop; then the nN final rows are placed along
 // the smoothed lines, clustered so that the first one sits exactly firstCellHeight from
 // the wall (LineRedistribution.hpp); where those rows fold, they are placed again with a
-// longer wall blend. Where that mesh is invalid, it is built once more
-// without the outer loop's orthogonality control (HohMeshOptions,
+// longer wall blend. Where that mesh is invalid, it is built again without the outer
+// loop's orthogonality control, then without the wall's (HohMeshOptions,
 // docs/elliptic-smoothing.md "Second try").
 #include <string>
 
@@ -44,9 +44,11 @@ struct HohMeshOptions {
   // blend twice as long, at most this many times (0: never; docs/elliptic-smoothing.md
   // "Longer wall blend where the rows fold").
   int wallBlendRetries = 3;
-  // Where the mesh is invalid with elliptic.outerOrthogonality, build it once more without
-  // (HohMesh::firstTryProblem says so).
+  // Where the mesh is invalid, build it again without elliptic.outerOrthogonality, then
+  // (triesWithoutWallOrthogonality) without elliptic.wallOrthogonality, then without
+  // both, and keep the first valid one (HohMesh::retry and firstTryProblem say so).
   bool secondTryWithoutOuterOrthogonality = true;
+  bool triesWithoutWallOrthogonality = true;
   EllipticOptions elliptic;
 };
 
@@ -56,9 +58,12 @@ struct HohMesh {
   bool valid = false;          // every cell of every block has positive area, convex corners
   std::string problem;         // why not valid (empty when valid)
   EllipticReport smoothing;    // sweeps, final residual, converged (sweeps 0: not smoothed)
-  // Non-empty when the mesh is the second try (HohMeshOptions): why the first, with the
-  // outer loop's orthogonality control, was invalid.
+  // Non-empty when the mesh is a later try (HohMeshOptions): why the first, with the
+  // orthogonality controls, was invalid, and what the kept try left out ("without
+  // orthogonality at the outer loop", "... at the wall", "... at the wall and the outer
+  // loop").
   std::string firstTryProblem;
+  std::string retry;
   // The wall blend the rows were placed with, in wall node spacings: longer than
   // HohMeshOptions::wallBlendLength when the rows folded with it (0: not placed).
   double wallBlendLength = 0;
