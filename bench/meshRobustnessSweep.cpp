@@ -51,12 +51,12 @@ int main(int argc, char** argv) {
     const HohMesh hoh = buildHohMesh(blade, d.condition, d.parameters);
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     out.valid = hoh.valid;
-    out.problem = hoh.problem;
     out.converged = hoh.smoothing.converged;
     out.sweeps = hoh.smoothing.iterations;
     out.finite = hasOnlyFiniteCoordinates(hoh.mesh);
     if (hoh.valid) out.quality = computeMeshQuality(hoh.mesh).Q;
-    out.problem = hoh.valid ? (hoh.retry.empty() ? "" : "meshed " + hoh.retry) : hoh.problem;
+    out.problem = hoh.valid ? (hoh.retryWithout.empty() ? "" : "meshed without orthogonality at " + hoh.retryWithout)
+                            : hoh.problem;
   });
   int valid = 0, notFinite = 0, notConverged = 0;
   double slowest = 0;
@@ -68,10 +68,10 @@ int main(int argc, char** argv) {
     notConverged += o.valid && !o.converged;
     slowest = std::max(slowest, o.seconds);
     std::printf("%4d pitch %.3f nO %5d nT %4d gammaLE %.2f gammaTE %.2f alpha %.2f clearance %6.3f: "
-                "%s %d sweeps %.2f s Q %.4f %s\n", k, d.condition.pitch / d.blade.chord, d.condition.nO,
+                "%s %d sweeps %.2f s Q %s %s\n", k, d.condition.pitch / d.blade.chord, d.condition.nO,
                 d.parameters.nT, d.parameters.gammaLe, d.parameters.gammaTe,
                 d.parameters.alphaCamber, o.clearance, o.valid ? "valid" : "INVALID", o.sweeps,
-                o.seconds, o.quality, o.problem.c_str());
+                o.seconds, o.valid ? std::to_string(o.quality).c_str() : "-", o.problem.c_str());
   }
   // The draws with a passage (no periodic boundary through the blade: issue 11's
   // denominator, which counts an interface through the blade as a passage), by clearance.

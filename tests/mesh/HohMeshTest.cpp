@@ -168,7 +168,7 @@ TEST(HohMesh, TriesWithoutTheWallsOrthogonalityWhereTheLinesFold) {
 
   const HohMesh hoh = buildHohMesh(blade, d.condition, d.parameters);
   ASSERT_TRUE(hoh.valid) << hoh.problem;
-  EXPECT_EQ(hoh.retry, "without orthogonality at the wall");
+  EXPECT_EQ(hoh.retryWithout, "the wall");
   EXPECT_EQ(hoh.firstTryProblem, folded.problem);
   const WallLayerStatistics wall = wallLayerStatistics(hoh.mesh.blocks[1], d.condition.firstCellHeight);
   EXPECT_GE(wall.heightWithin2Percent, 0.95);

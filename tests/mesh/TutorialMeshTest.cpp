@@ -94,13 +94,12 @@ TEST_P(TutorialMesh, DefaultParametersGiveAValidSmoothMesh) {
 // Issue 11's validity must-show: at the defaults, every pitch of the method's range and
 // nO across it, wherever the periodic boundaries leave the blade a passage. LS89 at 0.75
 // chord and T106A at 0.3 fold with the outer loop's orthogonality control and are meshed
-// by the second try without it (HohMeshOptions::secondTryWithoutOuterOrthogonality).
-// (A later try's mesh is counted too; HohMesh::retry says which.)
+// by a later try without it (HohMeshOptions::secondTryWithoutOuterOrthogonality).
 TEST_P(TutorialMesh, DefaultParametersAreValidAtEveryPitchAndNodeCount) {
   const std::string name = GetParam();
   const auto [blade, chord, paper] = loadTutorial(name);
   const MeshingParameters parameters = MeshingParameters::defaults(chord);
-  int meshed = 0, secondTries = 0;
+  int meshed = 0, laterTries = 0;
   for (double pitch : {0.3, 0.5, 0.75, 1.0})
     for (int nO : {10000, 30000, 50000}) {
       PassageCondition condition = paper;
@@ -111,12 +110,12 @@ TEST_P(TutorialMesh, DefaultParametersAreValidAtEveryPitchAndNodeCount) {
       EXPECT_TRUE(hoh.valid) << name << " at pitch " << pitch << " chord, nO " << nO << ": " << hoh.problem;
       if (!hoh.valid) continue;
       ++meshed;
-      secondTries += !hoh.firstTryProblem.empty();
+      laterTries += !hoh.firstTryProblem.empty();
       expectExactPeriodicImages(hoh.mesh, chord);
       EXPECT_TRUE(computeMeshQuality(hoh.mesh).valid);
     }
   std::printf("%s: %d pitch / nO combinations meshed, %d by a later try\n", name.c_str(),
-              meshed, secondTries);
+              meshed, laterTries);
 }
 
 INSTANTIATE_TEST_SUITE_P(Tutorials, TutorialMesh,

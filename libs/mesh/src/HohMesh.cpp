@@ -269,30 +269,30 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
   // wall's (the lines leave the wall as the algebraic grid has them, where the wall control
   // crosses the first rows next to a crowded edge), then without either.
   if (!result.valid && options.smooth) {
-    std::vector<HohMeshOptions> tries;
-    auto add = [&](bool outerOrthogonality, bool wallOrthogonality) {
-      HohMeshOptions o = options;
-      o.elliptic.outerOrthogonality = outerOrthogonality;
-      o.elliptic.wallOrthogonality = wallOrthogonality;
-      tries.push_back(o);
+    struct Try {
+      HohMeshOptions options;
+      const char* without;  // HohMesh::retryWithout
     };
-    const bool outerControl = options.elliptic.outerOrthogonality;
-    const bool wallControl = options.elliptic.wallOrthogonality;
-    if (options.secondTryWithoutOuterOrthogonality && outerControl) add(false, wallControl);
-    if (options.triesWithoutWallOrthogonality && wallControl) {
-      add(outerControl, false);
-      if (outerControl) add(false, false);
-    }
-    for (const HohMeshOptions& o : tries) {
-      HohMesh retry;
-      retry.nN = result.nN;
-      buildBlocks(retry, wall, outer, boundary, condition, o);
-      if (!retry.valid) continue;
-      retry.firstTryProblem = result.problem;
-      retry.retry = std::string("without orthogonality at the ") +
-                    (o.elliptic.outerOrthogonality ? "wall"
-                     : o.elliptic.wallOrthogonality ? "outer loop" : "wall and the outer loop");
-      result = std::move(retry);
+    std::vector<Try> tries;
+    auto add = [&](bool dropOuter, bool dropWall, const char* without) {
+      Try t{options, without};
+      if (dropOuter) t.options.elliptic.outerOrthogonality = false;
+      if (dropWall) t.options.elliptic.wallOrthogonality = false;
+      tries.push_back(t);
+    };
+    const bool outerRetry = options.secondTryWithoutOuterOrthogonality && options.elliptic.outerOrthogonality;
+    const bool wallRetry = options.triesWithoutWallOrthogonality && options.elliptic.wallOrthogonality;
+    if (outerRetry) add(true, false, "the outer loop");
+    if (wallRetry) add(false, true, "the wall");
+    if (outerRetry && wallRetry) add(true, true, "the wall and the outer loop");
+    for (const Try& t : tries) {
+      HohMesh candidate;
+      candidate.nN = result.nN;
+      buildBlocks(candidate, wall, outer, boundary, condition, t.options);
+      if (!candidate.valid) continue;
+      candidate.firstTryProblem = result.problem;
+      candidate.retryWithout = t.without;
+      result = std::move(candidate);
       break;
     }
   }

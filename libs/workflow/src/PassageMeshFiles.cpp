@@ -25,8 +25,8 @@ HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& 
         // or too few rows to smooth
     std::printf("%s: O-block %d x %d nodes; not smoothed\n", tool.c_str(), parameters.nT, hoh.nN);
   if (!hoh.firstTryProblem.empty())
-    std::printf("  meshed by a later try, %s: the first folded (%s)\n", hoh.retry.c_str(),
-                hoh.firstTryProblem.c_str());
+    std::printf("  meshed by a later try, without orthogonality at %s: the first was invalid (%s)\n",
+                hoh.retryWithout.c_str(), hoh.firstTryProblem.c_str());
   if (hoh.valid && hoh.wallBlendLength > HohMeshOptions{}.wallBlendLength)
     std::printf("  rows placed with a wall blend of %g wall spacings: they folded with %g\n",
                 hoh.wallBlendLength, HohMeshOptions{}.wallBlendLength);

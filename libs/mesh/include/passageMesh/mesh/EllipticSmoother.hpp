@@ -47,6 +47,7 @@ struct EllipticOptions {
   int wallLayerFraction = 8;
   // Sorenson's control at the wall too (lines leave the wall orthogonally with the initial
   // wall spacing), iterated with the outer values; for grids without wall clustering.
+  // Off in buildHohMesh's later tries where the first mesh folds.
   bool wallOrthogonality = true;
   // Sorenson's control at the outer loop (lines arriving square to it with the initial
   // spacing there). Off: the outer values are zero, the lines arrive at the angle the

@@ -18,7 +18,7 @@
 // the wall (LineRedistribution.hpp); where those rows fold, they are placed again with a
 // longer wall blend. Where that mesh is invalid, it is built again without the outer
 // loop's orthogonality control, then without the wall's (HohMeshOptions,
-// docs/elliptic-smoothing.md "Second try").
+// docs/elliptic-smoothing.md "Second try" and "Tries without the wall's orthogonality").
 #include <string>
 
 #include "passageMesh/mesh/EllipticSmoother.hpp"
@@ -44,10 +44,11 @@ struct HohMeshOptions {
   // blend twice as long, at most this many times (0: never; docs/elliptic-smoothing.md
   // "Longer wall blend where the rows fold").
   int wallBlendRetries = 3;
-  // Where the mesh is invalid, build it again without elliptic.outerOrthogonality, then
-  // (triesWithoutWallOrthogonality) without elliptic.wallOrthogonality, then without
-  // both, and keep the first valid one (HohMesh::retry and firstTryProblem say so).
+  // Where the mesh is invalid, it is built again with less asked of the smoothing and the
+  // first valid try is kept (HohMesh::retryWithout says which). This one allows the try
+  // without elliptic.outerOrthogonality (and, with the next, the one without both) ...
   bool secondTryWithoutOuterOrthogonality = true;
+  // ... and this one the try without elliptic.wallOrthogonality (tried after the first).
   bool triesWithoutWallOrthogonality = true;
   EllipticOptions elliptic;
 };
@@ -58,12 +59,12 @@ struct HohMesh {
   bool valid = false;          // every cell of every block has positive area, convex corners
   std::string problem;         // why not valid (empty when valid)
   EllipticReport smoothing;    // sweeps, final residual, converged (sweeps 0: not smoothed)
-  // Non-empty when the mesh is a later try (HohMeshOptions): why the first, with the
-  // orthogonality controls, was invalid, and what the kept try left out ("without
-  // orthogonality at the outer loop", "... at the wall", "... at the wall and the outer
-  // loop").
+  // Non-empty when the mesh is a later try (HohMeshOptions): why the first, with every
+  // orthogonality control asked for, was invalid ...
   std::string firstTryProblem;
-  std::string retry;
+  // ... and where the kept try drops the orthogonality: "the outer loop", "the wall" or
+  // "the wall and the outer loop".
+  std::string retryWithout;
   // The wall blend the rows were placed with, in wall node spacings: longer than
   // HohMeshOptions::wallBlendLength when the rows folded with it (0: not placed).
   double wallBlendLength = 0;
