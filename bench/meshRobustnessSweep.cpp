@@ -31,7 +31,7 @@ struct Outcome {
   double seconds = 0;
   double clearance = 0;  // chords
   double quality = -1;   // Q of a valid mesh
-  std::string problem;
+  std::string problem;  // an invalid draw: why; a valid one: the later try that meshed it (or empty)
 };
 
 }  // namespace
