@@ -1,8 +1,10 @@
 // policyEvaluation: a policy (or the defaults) on sampler passages, against the best an
 // optimiser finds for each passage (issue 12 must-show: one-shot Q / iterative best).
-//   policyEvaluation POLICY.xml|defaults SEED COUNT [BUDGET [OUT.csv]]
+//   policyEvaluation POLICY.xml|defaults SEED COUNT [BUDGET [OUT.csv|- [EDGE_RADII]]]
 // Passages are PassageEnvironment's episodes 0..COUNT-1 of stream SEED (policyTrain's
-// validation set is stream 20261202, episodes 0..49). With BUDGET > 0, CMA-ES
+// validation set is stream 20261202), their edge radii drawn as EDGE_RADII says
+// (halfLogUniform, the default, as policyTrain draws them since the twelfth session, or
+// uniform, as before); a policy sees them under its own state scaling. With BUDGET > 0, CMA-ES
 // (iterOptimize's default method) searches each passage's meshing parameters from the
 // defaults with that many meshes; the ratio is one-shot Q / that best. Prints a summary,
 // for a policy how often each action sits at a bound of its range (|a| >= 0.98 in scaled
@@ -18,6 +20,7 @@
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/core/GnuplotRun.hpp"
+#include "passageMesh/core/InputError.hpp"
 #include "passageMesh/core/ParallelFor.hpp"
 #include "passageMesh/optimize/Optimizer.hpp"
 #include "passageMesh/policy/Policy.hpp"
@@ -29,16 +32,22 @@ int main(int argc, char* argv[]) {
   // A missing or corrupt file ends in one line on stderr and exit code 1, not a crash.
   return runUtility("policyEvaluation", [&] {
     if (argc < 4) {
-      std::fprintf(stderr, "usage: policyEvaluation POLICY.xml|defaults SEED COUNT [BUDGET [OUT.csv]]\n");
+      std::fprintf(stderr, "usage: policyEvaluation POLICY.xml|defaults SEED COUNT [BUDGET [OUT.csv|- "
+                           "[halfLogUniform|uniform]]]\n");
       return 2;
     }
     const std::string which = argv[1];
     const std::uint64_t seed = std::stoull(argv[2]);
     const int count = std::stoi(argv[3]);
     const long budget = argc > 4 ? std::stol(argv[4]) : 0;
-    const PassageEnvironment environment;
     std::optional<Policy> policy;
     if (which != "defaults") policy = Policy::load(which);
+    const std::string edgeRadii = argc > 6 ? argv[6] : "halfLogUniform";
+    if (edgeRadii != "halfLogUniform" && edgeRadii != "uniform")
+      throw InputError("command line: EDGE_RADII is halfLogUniform or uniform, not " + edgeRadii);
+    const PassageEnvironment environment(
+        edgeRadii == "uniform" ? EdgeRadiusDraw::uniform : EdgeRadiusDraw::halfLogUniform,
+        policy ? policy->stateScaling() : policyStateScaling(BladeParameterRange::readDefault()));
 
     struct Row {
       double oneShot = -1, best = -1;
@@ -109,7 +118,7 @@ int main(int argc, char* argv[]) {
                   "one-shot / best: median %.4f, worst %.4f (an invalid one-shot mesh counts 0); %d both valid\n",
                   budget, ratios.size(), summarizeRewards(ratios).median,
                   ratios.empty() ? 0.0 : *std::min_element(ratios.begin(), ratios.end()), bothValid);
-    if (argc > 5) {
+    if (argc > 5 && std::string(argv[5]) != "-") {
       const std::filesystem::path out = argv[5];
       writeFileAtomically(out, csv);
       if (budget > 0) {

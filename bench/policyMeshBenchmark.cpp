@@ -43,7 +43,7 @@ int main(int argc, char* argv[]) {
     std::vector<double> forward;
     for (int r = 0; r < 1000; ++r) {
       const auto start = std::chrono::steady_clock::now();
-      const MeshingParameters p = meshingParametersOf(policy.act(policyState(blade, input.condition)), blade.chord);
+      const MeshingParameters p = meshingParametersOf(policy.act(policy.state(blade, input.condition)), blade.chord);
       forward.push_back(seconds(start));
       if (p.nT < 0) return 1;  // keeps the call from being optimised away
     }
@@ -51,7 +51,7 @@ int main(int argc, char* argv[]) {
     double q = 0;
     for (int r = 0; r < repeats; ++r) {
       const auto start = std::chrono::steady_clock::now();
-      const MeshingParameters p = meshingParametersOf(policy.act(policyState(blade, input.condition)), blade.chord);
+      const MeshingParameters p = meshingParametersOf(policy.act(policy.state(blade, input.condition)), blade.chord);
       const HohMesh hoh = buildHohMesh(input.blade, input.condition, p);
       q = hoh.valid ? computeMeshQuality(hoh.mesh).Q : invalidMeshQuality;
       whole.push_back(seconds(start));

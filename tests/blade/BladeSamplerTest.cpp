@@ -33,3 +33,27 @@ TEST(BladeSampler, UniformVariatesAreInUnitInterval) {
   EXPECT_LT(lo, 0.01);
   EXPECT_GT(hi, 0.99);
 }
+
+TEST(BladeSampler, HalfLogUniformEdgeRadiiMakeSharpEdgesCommonAndStayInTheBox) {
+  const auto range = BladeParameterRange::readDefault();
+  EXPECT_EQ(BladeParameters::names()[BladeParameters::radiusLeIndex], "radiusLe");
+  EXPECT_EQ(BladeParameters::names()[BladeParameters::radiusTeIndex], "radiusTe");
+  BladeSampler uniform(range, 7), mixed(range, 7, EdgeRadiusDraw::halfLogUniform),
+      again(range, 7, EdgeRadiusDraw::halfLogUniform);
+  // A trailing edge as sharp as STD10's or SIRT's (1e-4 chord) or sharper.
+  const double sharp = 3e-4;
+  int sharpUniform = 0, sharpMixed = 0, roundMixed = 0;
+  const int n = 400;
+  for (int k = 0; k < n; ++k) {
+    sharpUniform += uniform.next().radiusTe < sharp;
+    const BladeParameters p = mixed.next();
+    EXPECT_TRUE(range.contains(p));
+    EXPECT_EQ(p.toArray(), again.next().toArray());
+    sharpMixed += p.radiusTe < sharp;
+    roundMixed += p.radiusTe > 0.006;  // the upper half of the range
+  }
+  // Uniform: P(radiusTe < 3e-4) = 0.023; half log-uniform: 0.5 ln(10) / ln(400) + 0.011 = 0.20.
+  EXPECT_LT(sharpUniform, 0.06 * n);
+  EXPECT_GT(sharpMixed, 0.12 * n);
+  EXPECT_GT(roundMixed, 0.15 * n);  // round edges stay common (expected 0.5 * 0.5 + 0.5 * 0.12 = 0.31)
+}

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "../blade/BladeTestData.hpp"
@@ -45,6 +46,47 @@ TEST(PolicyScaling, ConditionEdgesMapToPlusMinusOneAndOutsideValuesAreNamed) {
   const auto lines = stateOutsideTraining(policyState(blade, c));
   ASSERT_EQ(lines.size(), 1u);
   EXPECT_NE(lines[0].find("pitch"), std::string::npos) << lines[0];
+}
+
+TEST(PolicyScaling, EdgeRadiiScaleLogarithmicallyAndFormatOneScalesLinearly) {
+  const BladeParameterRange range = BladeParameterRange::readDefault();
+  const PolicyStateScaling logScale = policyStateScaling(range);
+  const PolicyStateScaling linear = policyStateScaling(range, EdgeRadiusScale::linear);
+  BladeParameters blade = testData::typicalTurbineBlade();
+  const PassageCondition c{0.7 * blade.chord, 0.5 * blade.chord, 0.5 * blade.chord, 20000, 1e-4 * blade.chord};
+  const int le = BladeParameters::radiusLeIndex - 3, te = BladeParameters::radiusTeIndex - 3;
+  ASSERT_EQ(policyStateNames()[le], "radiusLe");
+  ASSERT_EQ(policyStateNames()[te], "radiusTe");
+  for (int k = 0; k < policyStateSize; ++k) {
+    EXPECT_EQ(logScale.logarithmic[k], k == le || k == te) << policyStateNames()[k];
+    EXPECT_FALSE(linear.logarithmic[k]);
+  }
+  blade.radiusLe = range.lower[BladeParameters::radiusLeIndex];
+  blade.radiusTe = std::sqrt(range.lower[BladeParameters::radiusTeIndex] * range.upper[BladeParameters::radiusTeIndex]);
+  PolicyState s = policyState(blade, c, logScale);
+  EXPECT_NEAR(s[le], -1.0, 1e-12);
+  EXPECT_NEAR(s[te], 0.0, 1e-12);  // the geometric mean is the middle of a log scale
+  // A sharp edge (STD10's 1e-4 chord) and one three times blunter lie far apart on the log
+  // scale (0.37 units) and close together on the linear one (0.03).
+  blade.radiusTe = 1e-4;
+  const double sharpLog = policyState(blade, c, logScale)[te], sharpLinear = policyState(blade, c, linear)[te];
+  blade.radiusTe = 3e-4;
+  EXPECT_GT(policyState(blade, c, logScale)[te] - sharpLog, 0.3);
+  EXPECT_LT(policyState(blade, c, linear)[te] - sharpLinear, 0.05);
+  // The other entries do not depend on the edge-radius scale.
+  s = policyState(blade, c, logScale);
+  const PolicyState t = policyState(blade, c, linear);
+  for (int k = 0; k < policyStateSize; ++k)
+    if (k != le && k != te) {
+      EXPECT_EQ(s[k], t[k]) << policyStateNames()[k];
+    }
+  // A radius of 0 stays finite and is named as outside the training range.
+  blade.radiusTe = 0;
+  s = policyState(blade, c, logScale);
+  EXPECT_TRUE(std::isfinite(s[te]));
+  const auto lines = stateOutsideTraining(s);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("radiusTe"), std::string::npos) << lines[0];
 }
 
 TEST(PolicyScaling, ActionsRoundTripAndAreClippedToTheParameterBox) {

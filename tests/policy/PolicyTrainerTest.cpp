@@ -152,7 +152,8 @@ TEST(PolicyTrainer, TheValidationScoresTheActionsOfOneStateForwardPasses) {
   // Through the files, as policyMesh reads them.
   const auto dir = testData::tempFolder("validationOneState");
   std::filesystem::create_directories(dir);
-  writePolicyFiles(dir / "policy.xml", trainer.learner(), PolicyProvenance{});
+  writePolicyFiles(dir / "policy.xml", trainer.learner(), policyStateScaling(BladeParameterRange::readDefault()),
+                   PolicyProvenance{});
   const Policy policy = Policy::load(dir / "policy.xml");
   double sum = 0;
   for (int i = 0; i < o.validationPassages; ++i) {

@@ -143,4 +143,16 @@ TEST(PolicyMeshCommand, MeshesWithATrainedPolicyAndRefusesBadPolicyFiles) {
   writeText(otherRange / "final.xml", xml);
   fs::copy_file(trained / "policy" / "final.pt", otherRange / "final.pt");
   refused("scalingMismatch", (otherRange / "final.xml").string(), "actionUpper");
+
+  // policyTrain writes the edge radii on a log scale (format 2); a scale word it does not know is refused.
+  xml = readText(policyXml);
+  EXPECT_NE(xml.find("<format>passageMesh policy 2</format>"), std::string::npos) << xml;
+  const std::string logRadii = "linear linear log log linear";
+  ASSERT_NE(xml.find(logRadii), std::string::npos) << xml;
+  const fs::path badScale = trained / "badScale";
+  fs::create_directories(badScale);
+  xml.replace(xml.find(logRadii), logRadii.size(), "linear linear log cubic linear");
+  writeText(badScale / "final.xml", xml);
+  fs::copy_file(trained / "policy" / "final.pt", badScale / "final.pt");
+  refused("badStateScale", (badScale / "final.xml").string(), "<stateScale> expects 24 words");
 }

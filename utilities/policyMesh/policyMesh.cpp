@@ -37,7 +37,7 @@ int main(int argc, char* argv[]) {
     const BladeParameters& blade = input.blade.parameters();
 
     const auto start = std::chrono::steady_clock::now();
-    const PolicyState state = policyState(blade, input.condition);
+    const PolicyState state = policy.state(blade, input.condition);
     for (const auto& w : stateOutsideTraining(state)) std::cerr << "policyMesh: warning: " << w << "\n";
     input.parameters = meshingParametersOf(policy.act(state), blade.chord);
     const double forwardSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -68,7 +68,7 @@ class TrainingProgress {
 };
 
 int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& rollouts,
-          const PolicyEnvironment& environment, const PolicyTrainOptions& options) {
+          const PassageEnvironment& environment, const PolicyTrainOptions& options) {
   const PolicyTrainPaths paths(cli.caseDir());
   const std::atomic<bool>& stop = installInterruptFlag();  // before anything slow
   PolicyTrainer trainer(options, environment, rollouts);
@@ -98,7 +98,7 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
   PolicyTrainer::Events events;
   events.afterBatch = [&](const PolicyTrainer& t) { progress(t, false); };
   events.newBestValidation = [&](const PolicyTrainer& t) {
-    writePolicyFiles(paths.policy, t.learner(), PolicyProvenance{t.episode(), t.bestValidation(), command});
+    writePolicyFiles(paths.policy, t.learner(), environment.stateScaling(), PolicyProvenance{t.episode(), t.bestValidation(), command});
   };
   events.checkpointDue = [&](const PolicyTrainer& t) {
     t.saveCheckpoint(paths.checkpoint);
@@ -106,7 +106,7 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
   };
   const bool done = trainer.run(&stop, events);
   trainer.saveCheckpoint(paths.checkpoint);
-  writePolicyFiles(paths.finalPolicy, trainer.learner(),
+  writePolicyFiles(paths.finalPolicy, trainer.learner(), environment.stateScaling(),
                    PolicyProvenance{trainer.episode(),
                                     trainer.validationCurve().empty() ? 0.0 : trainer.validationCurve().back().meanReward,
                                     command});
@@ -168,7 +168,11 @@ int main(int argc, char* argv[]) {
       options.threads = cli.values()["threads"].as<int>();
       if (options.threads < 0) throw InputError("command line: -threads: expected 0 (all cores) or more");
     }
-    const PassageEnvironment environment;
+    const bool logRadii = options.edgeRadii == "halfLogUniform";
+    const PassageEnvironment environment(
+        logRadii ? EdgeRadiusDraw::halfLogUniform : EdgeRadiusDraw::uniform,
+        policyStateScaling(BladeParameterRange::readDefault(),
+                           logRadii ? EdgeRadiusScale::logarithmic : EdgeRadiusScale::linear));
     if (worker) {
       serveRollouts(*mpi, environment, options.threads);
       return 0;

@@ -1,5 +1,6 @@
 #include "passageMesh/blade/BladeSampler.hpp"
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -72,14 +73,27 @@ double uniform01(std::mt19937_64& rng) {
   return static_cast<double>(rng() >> 11) * 0x1.0p-53;
 }
 
-BladeSampler::BladeSampler(BladeParameterRange range, std::uint64_t seed)
-    : range_(range), rng_(seed) {}
+BladeSampler::BladeSampler(BladeParameterRange range, std::uint64_t seed, EdgeRadiusDraw edgeRadii)
+    : range_(range), rng_(seed), edgeRadii_(edgeRadii) {
+  if (edgeRadii_ == EdgeRadiusDraw::halfLogUniform)
+    for (int k : {BladeParameters::radiusLeIndex, BladeParameters::radiusTeIndex})
+      if (!(range_.lower[k] > 0))
+        throw std::invalid_argument("blade sampler: a log-uniform edge radius needs a positive lower bound, not " +
+                                    std::to_string(range_.lower[k]));
+}
 
 BladeParameters BladeSampler::next(int maxTries) {
   for (int attempt = 0; attempt < maxTries; ++attempt) {
     std::array<double, BladeParameters::size> v;
     for (int k = 0; k < BladeParameters::size; ++k)
       v[k] = range_.lower[k] + (range_.upper[k] - range_.lower[k]) * uniform01(rng_);
+    // The coins come after the box's draws, so uniform draws keep their old sequence.
+    if (edgeRadii_ == EdgeRadiusDraw::halfLogUniform)
+      for (int k : {BladeParameters::radiusLeIndex, BladeParameters::radiusTeIndex}) {
+        const double u = uniform01(rng_);
+        if (uniform01(rng_) < 0.5)
+          v[k] = range_.lower[k] * std::pow(range_.upper[k] / range_.lower[k], u);
+      }
     ++drawn_;
     const BladeParameters p = BladeParameterRange::fromRangeCoordinates(v);
     if (checkBladeValidity(BladeShape(p)).valid) {

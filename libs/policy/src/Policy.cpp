@@ -14,7 +14,10 @@ namespace passageMesh {
 
 namespace {
 
-constexpr const char* policyFormat = "passageMesh policy 1";
+// Format 2 adds <stateScale> (linear or log per state value); format 1 files scale every
+// state value linearly and are still read.
+constexpr const char* policyFormat = "passageMesh policy 2";
+constexpr const char* policyFormat1 = "passageMesh policy 1";
 
 const std::vector<std::string>& policyKeys() {
   static const std::vector<std::string> keys{
@@ -22,6 +25,18 @@ const std::vector<std::string>& policyKeys() {
       "stateUpper", "actionNames", "actionLower", "actionUpper", "trainedEpisodes",
       "validationMeanReward", "command"};
   return keys;
+}
+
+std::vector<std::string> policyKeysOfFormat2() {
+  std::vector<std::string> keys = policyKeys();
+  keys.push_back("stateScale");
+  return keys;
+}
+
+std::string scaleText(const PolicyStateScaling& scaling) {
+  std::string text;
+  for (int k = 0; k < policyStateSize; ++k) text += std::string(k ? " " : "") + (scaling.logarithmic[k] ? "log" : "linear");
+  return text;
 }
 
 template <typename Container>
@@ -37,7 +52,7 @@ std::string joined(const Container& values) {
 }
 
 struct PolicyDescription {
-  PolicyStateBounds state = policyStateBounds(BladeParameterRange::readDefault());
+  PolicyStateScaling state = policyStateScaling(BladeParameterRange::readDefault(), EdgeRadiusScale::linear);
   std::array<double, policyActionSize> actionLower{}, actionUpper{};
   std::array<std::string, policyActionSize> actionNames;
   PolicyDescription() {
@@ -70,7 +85,7 @@ void expectText(const Dictionary& d, const std::string& key, const std::string& 
 }  // namespace
 
 void writePolicyFiles(const std::filesystem::path& xmlFile, const ActorCritic& learner,
-                      const PolicyProvenance& provenance) {
+                      const PolicyStateScaling& scaling, const PolicyProvenance& provenance) {
   std::filesystem::path actorFile = xmlFile;
   actorFile.replace_extension(".pt");
   learner.saveActor(actorFile);
@@ -79,8 +94,9 @@ void writePolicyFiles(const std::filesystem::path& xmlFile, const ActorCritic& l
   Dictionary d("policy");
   d.setComment(
       "passageMesh trained policy (docs/case-format.md). The actor maps the state, scaled to "
-      "[-1, 1] linearly from [stateLower, stateUpper], to the action in [-1, 1], scaled to the "
-      "meshing parameters from [actionLower, actionUpper] (lengths in chords).");
+      "[-1, 1] from [stateLower, stateUpper] (linearly in the value, or in its logarithm where "
+      "stateScale says log), to the action in [-1, 1], scaled linearly to the meshing parameters "
+      "from [actionLower, actionUpper] (lengths in chords).");
   d.set("format", policyFormat);
   d.set("actor", actorFile.filename().string());
   d.set("hiddenLayers", layout.hiddenText());
@@ -88,8 +104,9 @@ void writePolicyFiles(const std::filesystem::path& xmlFile, const ActorCritic& l
   d.set("layers", "layers.N.weight and layers.N.bias for N = 0, 2, 4, ...: Linear; odd N: LeakyReLU; "
                   "tanh on the output");
   d.set("stateNames", joined(policyStateNames()));
-  d.set("stateLower", joined(description.state.lower));
-  d.set("stateUpper", joined(description.state.upper));
+  d.set("stateLower", joined(scaling.lower));
+  d.set("stateUpper", joined(scaling.upper));
+  d.set("stateScale", scaleText(scaling));
   d.set("actionNames", joined(description.actionNames));
   d.set("actionLower", joined(description.actionLower));
   d.set("actionUpper", joined(description.actionUpper));
@@ -101,6 +118,7 @@ void writePolicyFiles(const std::filesystem::path& xmlFile, const ActorCritic& l
 
 struct Policy::Actor {
   NetworkLayout layout;
+  PolicyStateScaling scaling;
   FullyConnected network{nullptr};
   PolicyProvenance provenance;
 };
@@ -112,19 +130,39 @@ Policy& Policy::operator=(Policy&&) noexcept = default;
 
 Policy Policy::load(const std::filesystem::path& xmlFile) {
   if (!std::filesystem::exists(xmlFile)) throw InputError(xmlFile.string(), 0, "no such policy file");
-  const Dictionary d = Dictionary::read(xmlFile, "policy", policyKeys());
+  const Dictionary d = Dictionary::read(xmlFile, "policy", policyKeysOfFormat2());
   d.require(policyKeys());
-  expectText(d, "format", policyFormat);
+  const bool format1 = d.text("format") == policyFormat1;
+  if (!format1) expectText(d, "format", policyFormat);
   const PolicyDescription description;
   expectText(d, "stateNames", joined(policyStateNames()));
+  Policy policy;
+  Actor& a = *policy.actor_;
+  a.scaling = description.state;  // format 1: every value linear
+  if (!format1) {
+    d.require({"stateScale"});
+    std::istringstream scales(d.text("stateScale"));
+    std::string word;
+    for (int k = 0; k < policyStateSize; ++k) {
+      if (!(scales >> word) || (word != "linear" && word != "log"))
+        throw InputError(d.source(), d.line("stateScale"),
+                         "<stateScale> expects " + std::to_string(policyStateSize) + " words, each 'linear' or 'log'");
+      a.scaling.logarithmic[k] = word == "log";
+    }
+    if (scales >> word)
+      throw InputError(d.source(), d.line("stateScale"),
+                       "<stateScale> has more than " + std::to_string(policyStateSize) + " words");
+    for (int k = 0; k < policyStateSize; ++k)
+      if (a.scaling.logarithmic[k] && !(a.scaling.lower[k] > 0))
+        throw InputError(d.source(), d.line("stateScale"), "<stateScale> says log for " + policyStateNames()[k] +
+                                                               ", whose lower bound is not positive");
+  }
   expectText(d, "actionNames", joined(description.actionNames));
   expectNumbers(d, "stateLower", description.state.lower.data(), policyStateSize);
   expectNumbers(d, "stateUpper", description.state.upper.data(), policyStateSize);
   expectNumbers(d, "actionLower", description.actionLower.data(), policyActionSize);
   expectNumbers(d, "actionUpper", description.actionUpper.data(), policyActionSize);
 
-  Policy policy;
-  Actor& a = *policy.actor_;
   a.layout.stateSize = policyStateSize;
   a.layout.actionSize = policyActionSize;
   a.layout.leakySlope = d.scalar("leakySlope");
@@ -177,10 +215,16 @@ PolicyAction Policy::act(const PolicyState& state) const {
   return action;
 }
 
+PolicyState Policy::state(const BladeParameters& blade, const PassageCondition& condition) const {
+  return policyState(blade, condition, actor_->scaling);
+}
+
 MeshingParameters Policy::meshingParameters(const BladeParameters& blade,
                                             const PassageCondition& condition) const {
-  return meshingParametersOf(act(policyState(blade, condition)), blade.chord);
+  return meshingParametersOf(act(state(blade, condition)), blade.chord);
 }
+
+const PolicyStateScaling& Policy::stateScaling() const { return actor_->scaling; }
 
 const NetworkLayout& Policy::layout() const { return actor_->layout; }
 const PolicyProvenance& Policy::provenance() const { return actor_->provenance; }

@@ -49,8 +49,14 @@ double standardNormal(std::mt19937_64& rng) {
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
 }
 
-PassageEnvironment::PassageEnvironment(BladeParameterRange range) : range_(std::move(range)) {}
-PassageEnvironment::PassageEnvironment() : PassageEnvironment(BladeParameterRange::readDefault()) {}
+PassageEnvironment::PassageEnvironment(BladeParameterRange range, EdgeRadiusDraw edgeRadii,
+                                       PolicyStateScaling scaling)
+    : range_(std::move(range)), edgeRadii_(edgeRadii), scaling_(scaling) {}
+PassageEnvironment::PassageEnvironment(EdgeRadiusDraw edgeRadii, PolicyStateScaling scaling)
+    : PassageEnvironment(BladeParameterRange::readDefault(), edgeRadii, scaling) {}
+PassageEnvironment::PassageEnvironment()
+    : PassageEnvironment(EdgeRadiusDraw::halfLogUniform,
+                         policyStateScaling(BladeParameterRange::readDefault())) {}
 
 int PassageEnvironment::stateSize() const { return policyStateSize; }
 int PassageEnvironment::actionSize() const { return policyActionSize; }
@@ -62,10 +68,10 @@ std::vector<double> PassageEnvironment::defaultAction() const {
 
 EpisodeTask PassageEnvironment::draw(std::uint64_t seed, std::uint64_t episode) const {
   std::mt19937_64 rng = episodeRandom(seed, episode, 0);
-  BladeSampler sampler(range_, rng());
+  BladeSampler sampler(range_, rng(), edgeRadii_);
   const BladeParameters blade = sampler.next();
   const PassageCondition condition = sampleCondition(blade.chord, rng);
-  const PolicyState state = policyState(blade, condition, range_);
+  const PolicyState state = policyState(blade, condition, scaling_);
   auto input = std::make_shared<const PassageCase>(
       PassageCase{BladeShape(blade), condition, MeshingParameters::defaults(blade.chord)});
   EpisodeTask task;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 namespace passageMesh {
 
@@ -51,8 +52,8 @@ const std::array<std::string, policyStateSize>& policyStateNames() {
   return names;
 }
 
-PolicyStateBounds policyStateBounds(const BladeParameterRange& range) {
-  PolicyStateBounds b;
+PolicyStateScaling policyStateScaling(const BladeParameterRange& range, EdgeRadiusScale edgeRadii) {
+  PolicyStateScaling b;
   for (int k = 0; k < shapeEntries; ++k) {
     b.lower[k] = range.lower[firstShapeEntry + k];
     b.upper[k] = range.upper[firstShapeEntry + k];
@@ -61,11 +62,19 @@ PolicyStateBounds policyStateBounds(const BladeParameterRange& range) {
     b.lower[shapeEntries + k] = conditionEntries[k].lower;
     b.upper[shapeEntries + k] = conditionEntries[k].upper;
   }
+  if (edgeRadii == EdgeRadiusScale::logarithmic)
+    for (int k : {BladeParameters::radiusLeIndex, BladeParameters::radiusTeIndex}) {
+      const int entry = k - firstShapeEntry;
+      if (!(b.lower[entry] > 0) || !(b.upper[entry] > b.lower[entry]))
+        throw std::invalid_argument("policy state: the logarithmic scale of " + policyStateNames()[entry] +
+                                    " needs 0 < lower < upper");
+      b.logarithmic[entry] = true;
+    }
   return b;
 }
 
 PolicyState policyState(const BladeParameters& blade, const PassageCondition& condition,
-                        const BladeParameterRange& range) {
+                        const PolicyStateScaling& scaling) {
   const auto v = BladeParameterRange::toRangeCoordinates(blade);
   const double c = blade.chord;
   PolicyState values;
@@ -74,15 +83,23 @@ PolicyState policyState(const BladeParameters& blade, const PassageCondition& co
                                               static_cast<double>(condition.nO),
                                               condition.firstCellHeight / c};
   for (int k = 0; k < 5; ++k) values[shapeEntries + k] = conditionValues[k];
-  const PolicyStateBounds bounds = policyStateBounds(range);
   PolicyState s;
-  for (int k = 0; k < policyStateSize; ++k) s[k] = toUnit(values[k], bounds.lower[k], bounds.upper[k]);
+  for (int k = 0; k < policyStateSize; ++k) {
+    if (!scaling.logarithmic[k]) {
+      s[k] = toUnit(values[k], scaling.lower[k], scaling.upper[k]);
+      continue;
+    }
+    // A radius of 0 or less (a fitted blade can give one) sits far below the range: a
+    // millionth of the lower bound keeps the state finite and stateOutsideTraining names it.
+    const double positive = std::max(values[k], 1e-6 * scaling.lower[k]);
+    s[k] = toUnit(std::log(positive), std::log(scaling.lower[k]), std::log(scaling.upper[k]));
+  }
   return s;
 }
 
 PolicyState policyState(const BladeParameters& blade, const PassageCondition& condition) {
-  static const BladeParameterRange range = BladeParameterRange::readDefault();
-  return policyState(blade, condition, range);
+  static const PolicyStateScaling scaling = policyStateScaling(BladeParameterRange::readDefault());
+  return policyState(blade, condition, scaling);
 }
 
 std::vector<std::string> stateOutsideTraining(const PolicyState& state) {

@@ -126,6 +126,15 @@ const std::vector<Key>& keys() {
          o.actorStart = v;
        },
        [](const O& o) { return o.actorStart; }},
+      {"edgeRadii",
+       [](const Dictionary& d, O& o) {
+         const std::string v = d.text("edgeRadii");
+         if (v != "uniform" && v != "halfLogUniform")
+           throw InputError(d.source(), d.line("edgeRadii"),
+                            "<edgeRadii> is 'halfLogUniform' or 'uniform', not '" + v + "'");
+         o.edgeRadii = v;
+       },
+       [](const O& o) { return o.edgeRadii; }},
       {"seed", readInteger("seed", &O::seed, 0), [](const O& o) { return std::to_string(o.seed); }},
       {"threads", readInteger("threads", &O::threads, 0), [](const O& o) { return std::to_string(o.threads); }},
   };

@@ -14,6 +14,7 @@ namespace passageMesh {
 
 struct BladeParameters {
   static constexpr int size = 22;
+  static constexpr int radiusLeIndex = 8, radiusTeIndex = 9;  // in toArray() order
 
   double xLe = 0;        // camber line leading-edge point [m]
   double yLe = 0;

@@ -1,7 +1,8 @@
 #pragma once
 // A trained policy on disk and in use (docs/case-format.md "Policy files"):
 //   NAME.xml  its description: format version, the actor file's name, the layers, the
-//             state and action names in order with the ranges that scale them to [-1, 1]
+//             state and action names in order with the ranges (and, for the state, the
+//             linear or logarithmic scale) that map them to [-1, 1]
 //   NAME.pt   the actor's weights, LibTorch's own serialisation; Python reads them by name
 //             with torch.jit.load("NAME.pt").state_dict() (layers.0.weight, ...)
 // policyMesh loads it and maps a passage to its meshing parameters in one forward pass.
@@ -25,9 +26,10 @@ struct PolicyProvenance {
   std::string command;            // how they were trained
 };
 
-// Writes NAME.pt (the learner's actor) and NAME.xml, each atomically, the .pt first.
+// Writes NAME.pt (the learner's actor) and NAME.xml, each atomically, the .pt first;
+// `scaling` is the state scaling the actor was trained with.
 void writePolicyFiles(const std::filesystem::path& xmlFile, const ActorCritic& learner,
-                      const PolicyProvenance& provenance);
+                      const PolicyStateScaling& scaling, const PolicyProvenance& provenance);
 
 class Policy {
  public:
@@ -39,6 +41,9 @@ class Policy {
   Policy& operator=(Policy&&) noexcept;
 
   PolicyAction act(const PolicyState& state) const;  // one forward pass, no noise
+  // The passage's state under this policy's own scaling (its file's <stateScale>).
+  PolicyState state(const BladeParameters& blade, const PassageCondition& condition) const;
+  const PolicyStateScaling& stateScaling() const;
   MeshingParameters meshingParameters(const BladeParameters& blade,
                                       const PassageCondition& condition) const;
   const NetworkLayout& layout() const;

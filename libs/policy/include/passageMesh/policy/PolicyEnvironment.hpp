@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "passageMesh/blade/BladeSampler.hpp"
+#include "passageMesh/policy/PolicyScaling.hpp"
 #include "passageMesh/policy/ReplayBuffer.hpp"
 
 namespace passageMesh {
@@ -51,10 +52,18 @@ double standardNormal(std::mt19937_64& rng);
 // Blade passages from the sampler (PassageSampler.hpp: a valid blade from the BSP box, a
 // condition from PassageConditionRange); the reward is the mesh quality Q of the HOH mesh
 // built with the action's meshing parameters (-1 for an invalid mesh).
+//
+// edgeRadii says how the blade sampler draws the edge radii (halfLogUniform: this build's
+// training; uniform: the draws of policies trained before 2026-12-04's twelfth session),
+// `scaling` how the state is scaled (the policy's own, Policy::stateScaling()).
 class PassageEnvironment final : public PolicyEnvironment {
  public:
-  explicit PassageEnvironment(BladeParameterRange range);
-  PassageEnvironment();  // etc/bladeParameterRange.xml
+  PassageEnvironment(BladeParameterRange range, EdgeRadiusDraw edgeRadii, PolicyStateScaling scaling);
+  // etc/bladeParameterRange.xml, half log-uniform edge radii, logarithmic radii in the state.
+  PassageEnvironment();
+  // etc/bladeParameterRange.xml with the given draw and scaling.
+  PassageEnvironment(EdgeRadiusDraw edgeRadii, PolicyStateScaling scaling);
+  const PolicyStateScaling& stateScaling() const { return scaling_; }
   int stateSize() const override;
   int actionSize() const override;
   EpisodeTask draw(std::uint64_t seed, std::uint64_t episode) const override;
@@ -63,6 +72,8 @@ class PassageEnvironment final : public PolicyEnvironment {
 
  private:
   BladeParameterRange range_;
+  EdgeRadiusDraw edgeRadii_;
+  PolicyStateScaling scaling_;
 };
 
 }  // namespace passageMesh

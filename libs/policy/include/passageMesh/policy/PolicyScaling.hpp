@@ -5,7 +5,10 @@
 // chord are left out: Q does not change when a passage is moved or scaled, method.md
 // section 1), the camber angles relative to the stagger as etc/bladeParameterRange.xml
 // gives them, then the condition in chords: pitch, xIn, xOut, nO, firstCellHeight. Each
-// value is mapped linearly from its range (the BSP box, PassageConditionRange) to [-1, 1].
+// value is mapped from its range (the BSP box, PassageConditionRange) to [-1, 1]: linearly,
+// except the edge radii, whose range spans 2.5-3.5 decades: those are mapped linearly in
+// their logarithm (policy format 2), so that a sharp edge (1e-4 chord) and a sharper one
+// are told apart (format 1, the linear map, crowds all sharp edges near -1).
 // Action (8 values): the meshing parameters in MeshingParameters::table() order, each
 // mapped linearly from its range (lengths in chords) to [-1, 1].
 #include <array>
@@ -27,18 +30,25 @@ using PolicyAction = std::array<double, policyActionSize>;
 // The state's names in order ("stagger", ..., "pitch", ..., "firstCellHeight").
 const std::array<std::string, policyStateSize>& policyStateNames();
 
-// The range of each state value in its own units (range coordinates of the BSP box, then
-// the condition in chords; etc/bladeParameterRange.xml, PassageConditionRange): the value
-// at `lower` scales to -1, at `upper` to +1.
-struct PolicyStateBounds {
+// How each state value is scaled: its range in its own units (range coordinates of the
+// BSP box, then the condition in chords; etc/bladeParameterRange.xml,
+// PassageConditionRange), the value at `lower` scaling to -1 and at `upper` to +1, and
+// whether that map is linear in the logarithm of the value (logarithmic) or in the value.
+struct PolicyStateScaling {
   PolicyState lower, upper;
+  std::array<bool, policyStateSize> logarithmic{};
 };
-PolicyStateBounds policyStateBounds(const BladeParameterRange& range);
+enum class EdgeRadiusScale { linear, logarithmic };
+// The scaling of a range box; the edge radii as `edgeRadii` says (logarithmic: this
+// build's policies; linear: policy files of format 1). Throws std::invalid_argument where
+// a logarithmic entry's lower bound is not positive.
+PolicyStateScaling policyStateScaling(const BladeParameterRange& range,
+                                      EdgeRadiusScale edgeRadii = EdgeRadiusScale::logarithmic);
 
-// The state of a passage, scaled by `range` (the BSP box the blade sampler draws from).
+// The state of a passage under a scaling.
 PolicyState policyState(const BladeParameters& blade, const PassageCondition& condition,
-                        const BladeParameterRange& range);
-// The same with etc/bladeParameterRange.xml (read once).
+                        const PolicyStateScaling& scaling);
+// The same with this build's scaling of etc/bladeParameterRange.xml (read once).
 PolicyState policyState(const BladeParameters& blade, const PassageCondition& condition);
 
 // One line per state value outside [-1, 1]: the policy was not trained there.

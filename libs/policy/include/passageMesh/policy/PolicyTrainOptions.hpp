@@ -43,6 +43,11 @@ struct PolicyTrainOptions {
   // (random, then moved so that it starts at the environment's default action, for the
   // passages etc/meshDictDefaults.xml; docs/policy.md measures both).
   std::string actorStart = "defaults";
+  // The training passages' edge radii: "halfLogUniform" (each radius log-uniform in its
+  // range with probability 1/2, logarithmic in the state: sharp edges are common and told
+  // apart) or "uniform" (uniform draws, linear in the state: the policies trained before
+  // the twelfth session, 2026-12-04). docs/policy.md measures both.
+  std::string edgeRadii = "halfLogUniform";
   std::uint64_t seed = 1;         // weights, episodes, noise and minibatches
   int threads = 0;                // rollout threads per process (0 = all cores)
 
