@@ -1,10 +1,14 @@
 // policyEvaluation: a policy (or the defaults) on sampler passages, against the best an
 // optimiser finds for each passage (issue 12 must-show: one-shot Q / iterative best).
-//   policyEvaluation POLICY.xml|defaults SEED COUNT [BUDGET [OUT.csv|- [EDGE_RADII]]]
+//   policyEvaluation POLICY.xml|defaults SEED COUNT [BUDGET [OUT.csv|- [EDGE_RADII [BESTS.csv]]]]
 // Passages are PassageEnvironment's episodes 0..COUNT-1 of stream SEED (policyTrain's
 // validation set is stream 20261202), their edge radii drawn as EDGE_RADII says
 // (halfLogUniform, the default, as policyTrain draws them since the twelfth session, or
-// uniform, as before); a policy sees them under its own state scaling. With BUDGET > 0, CMA-ES
+// uniform, as before); a policy sees them under its own state scaling. With BESTS.csv (the
+// OUT.csv of an earlier run on the same SEED, COUNT, BUDGET and EDGE_RADII) the CMA-ES
+// searches are not run again: their bests do not depend on the policy (CMA-ES starts at
+// the defaults with seed 1), so each passage's best is the larger of the file's bestQ and
+// this one-shot Q, as the search would give. With BUDGET > 0, CMA-ES
 // (iterOptimize's default method) searches each passage's meshing parameters from the
 // defaults with that many meshes; the ratio is one-shot Q / that best. Prints a summary,
 // for a policy how often each action sits at a bound of its range (|a| >= 0.98 in scaled
@@ -14,6 +18,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -33,7 +38,7 @@ int main(int argc, char* argv[]) {
   return runUtility("policyEvaluation", [&] {
     if (argc < 4) {
       std::fprintf(stderr, "usage: policyEvaluation POLICY.xml|defaults SEED COUNT [BUDGET [OUT.csv|- "
-                           "[halfLogUniform|uniform]]]\n");
+                           "[halfLogUniform|uniform [BESTS.csv]]]]\n");
       return 2;
     }
     const std::string which = argv[1];
@@ -45,6 +50,25 @@ int main(int argc, char* argv[]) {
     const std::string edgeRadii = argc > 6 ? argv[6] : "halfLogUniform";
     if (edgeRadii != "halfLogUniform" && edgeRadii != "uniform")
       throw InputError("command line: EDGE_RADII is halfLogUniform or uniform, not " + edgeRadii);
+    std::vector<double> earlierBests;
+    if (argc > 7) {
+      std::ifstream in(argv[7]);
+      if (!in) throw InputError(argv[7], 0, "cannot read the earlier run's CSV");
+      std::string line;
+      std::getline(in, line);
+      for (int row = 0; std::getline(in, line); ++row) {
+        std::istringstream fields(line);
+        std::string passage, oneShot, best;
+        if (!std::getline(fields, passage, ',') || !std::getline(fields, oneShot, ',') ||
+            !std::getline(fields, best, ',') || std::stoi(passage) != row)
+          throw InputError(argv[7], row + 2, "expected 'passage,oneShotQ,bestQ,ratio' with passage " +
+                                                 std::to_string(row));
+        earlierBests.push_back(std::stod(best));
+      }
+      if (static_cast<int>(earlierBests.size()) != count || budget <= 0)
+        throw InputError(argv[7], 0, "holds " + std::to_string(earlierBests.size()) + " passages; expected " +
+                                         std::to_string(count) + " and a BUDGET above 0");
+    }
     const PassageEnvironment environment(
         edgeRadii == "uniform" ? EdgeRadiusDraw::uniform : EdgeRadiusDraw::halfLogUniform,
         policy ? policy->stateScaling() : policyStateScaling(BladeParameterRange::readDefault()));
@@ -70,7 +94,9 @@ int main(int argc, char* argv[]) {
       }
       Row& row = rows[static_cast<std::size_t>(i)];
       row.oneShot = task.reward(action);
-      if (budget > 0) {
+      if (!earlierBests.empty()) {
+        row.best = std::max(row.oneShot, earlierBests[static_cast<std::size_t>(i)]);
+      } else if (budget > 0) {
         BoxProblem box;
         box.lower = Eigen::VectorXd::Constant(policyActionSize, -1.0);
         box.upper = Eigen::VectorXd::Constant(policyActionSize, 1.0);
