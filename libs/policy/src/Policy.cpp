@@ -51,8 +51,8 @@ std::string joined(const Container& values) {
   return s.str();
 }
 
+// This build's action layout (the state's comes from the trainer's or the file's scaling).
 struct PolicyDescription {
-  PolicyStateScaling state = policyStateScaling(BladeParameterRange::readDefault(), EdgeRadiusScale::linear);
   std::array<double, policyActionSize> actionLower{}, actionUpper{};
   std::array<std::string, policyActionSize> actionNames;
   PolicyDescription() {
@@ -138,7 +138,8 @@ Policy Policy::load(const std::filesystem::path& xmlFile) {
   expectText(d, "stateNames", joined(policyStateNames()));
   Policy policy;
   Actor& a = *policy.actor_;
-  a.scaling = description.state;  // format 1: every value linear
+  // This build's ranges; every value linear (format 1) until <stateScale> says otherwise.
+  a.scaling = policyStateScaling(BladeParameterRange::readDefault(), EdgeRadiusScale::linear);
   if (!format1) {
     d.require({"stateScale"});
     std::istringstream scales(d.text("stateScale"));
@@ -158,8 +159,8 @@ Policy Policy::load(const std::filesystem::path& xmlFile) {
                                                                ", whose lower bound is not positive");
   }
   expectText(d, "actionNames", joined(description.actionNames));
-  expectNumbers(d, "stateLower", description.state.lower.data(), policyStateSize);
-  expectNumbers(d, "stateUpper", description.state.upper.data(), policyStateSize);
+  expectNumbers(d, "stateLower", a.scaling.lower.data(), policyStateSize);
+  expectNumbers(d, "stateUpper", a.scaling.upper.data(), policyStateSize);
   expectNumbers(d, "actionLower", description.actionLower.data(), policyActionSize);
   expectNumbers(d, "actionUpper", description.actionUpper.data(), policyActionSize);
 
