@@ -2,13 +2,19 @@
 // known optimum, cheap reward), so the learner's cost and its learning can be measured
 // apart from the mesher (docs/benchmarks.md "Policy learner").
 //   policyLearnerBenchmark [EPISODES [HIDDEN [LEARNING_RATE [SEED [CRITIC_UPDATES
-//                          [ACTOR_EVERY [MINIBATCH]]]]]]]
+//                          [ACTOR_EVERY [MINIBATCH [CRITIC_MODEL [CLIFF [NOISE]]]]]]]]]]
 //     HIDDEN: layer widths separated by commas ("512,256,256,128", the paper's)
+//     CRITIC_MODEL: reward (default) or validityAndQuality (policyTrainDict's criticModel)
+//     CLIFF: actions whose first entry is more than CLIFF above the optimum's get -1
+//            (ToyEnvironment; default: none)
+//     NOISE: sigma of the first 1000 episodes, then NOISE / 3 (cos + 1), the shipped
+//            policy's schedule at 0.3 (default: the paper's, 1 then 0.25 (cos + 1))
 // Prints the RMS action error on 1000 unseen states every tenth of the run and the learner
 // time per episode (one thread).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -33,16 +39,22 @@ int main(int argc, char* argv[]) {
   if (argc > 5) options.criticUpdatesPerEpisode = std::atoi(argv[5]);
   if (argc > 6) options.actorUpdateEvery = std::atoi(argv[6]);
   if (argc > 7) options.minibatch = std::atoi(argv[7]);
+  if (argc > 8) options.criticModel = argv[8];
+  if (argc > 10) {
+    options.noiseStartSigma = std::atof(argv[10]);
+    options.noiseAmplitude = options.noiseStartSigma / 3;
+  }
+  const double cliff = argc > 9 ? std::atof(argv[9]) : std::numeric_limits<double>::infinity();
   options.validationPassages = 0;
   options.threads = 1;
 
-  const ToyEnvironment toy(24, 8, 7);
+  const ToyEnvironment toy(24, 8, 7, cliff);
   ThreadRollouts rollouts(1);
   PolicyTrainer trainer(options, toy, rollouts);
   std::printf("toy problem 24 -> 8, hidden %s, learning rates %s, seed %llu, critic updates %d per "
-              "episode, actor every %d, minibatch %d\n", hidden.c_str(), rates.c_str(),
+              "episode, actor every %d, minibatch %d, critic %s, cliff %g\n", hidden.c_str(), rates.c_str(),
               static_cast<unsigned long long>(options.seed), options.criticUpdatesPerEpisode,
-              options.actorUpdateEvery, options.minibatch);
+              options.actorUpdateEvery, options.minibatch, options.criticModel.c_str(), cliff);
   const auto start = std::chrono::steady_clock::now();
   long next = options.episodes / 10;
   PolicyTrainer::Events events;

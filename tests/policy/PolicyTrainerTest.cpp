@@ -45,36 +45,46 @@ std::pair<PolicyBatch, Eigen::VectorXd> fingerprint(const ActorCritic& learner, 
 
 }  // namespace
 
+// Both critic models, on a toy with failures (-1) so that the validity network learns too.
 TEST(PolicyTrainer, ResumingFromACheckpointGivesTheSameWeightsBitForBit) {
-  const ToyEnvironment toy(24, 8, 3);
-  ThreadRollouts rollouts(1);
-  PolicyTrainer straight(smallRun(300), toy, rollouts);
-  ASSERT_TRUE(straight.run(nullptr, {}));
+  for (const std::string critic : {"reward", "validityAndQuality"}) {
+    SCOPED_TRACE("criticModel " + critic);
+    const ToyEnvironment toy(24, 8, 3, 0.05);
+    PolicyTrainOptions run = smallRun(300);
+    run.criticModel = critic;
+    ThreadRollouts rollouts(1);
+    PolicyTrainer straight(run, toy, rollouts);
+    ASSERT_TRUE(straight.run(nullptr, {}));
 
-  const auto file = testData::tempFolder("policyTrainer") / "checkpoint.pt";
-  {
-    PolicyTrainer first(smallRun(300), toy, rollouts);
-    std::atomic<bool> stop{false};
-    PolicyTrainer::Events events;
-    events.checkpointDue = [&](const PolicyTrainer& t) {
-      t.saveCheckpoint(file);
-      stop = true;  // as if killed right after the first checkpoint
-    };
-    ASSERT_FALSE(first.run(&stop, events));
-    EXPECT_EQ(first.episode(), 64);
+    const auto file = testData::tempFolder("policyTrainer" + critic) / "checkpoint.pt";
+    {
+      PolicyTrainer first(run, toy, rollouts);
+      std::atomic<bool> stop{false};
+      PolicyTrainer::Events events;
+      events.checkpointDue = [&](const PolicyTrainer& t) {
+        t.saveCheckpoint(file);
+        stop = true;  // as if killed right after the first checkpoint
+      };
+      ASSERT_FALSE(first.run(&stop, events));
+      EXPECT_EQ(first.episode(), 64);
+    }
+    PolicyTrainer resumed(run, toy, rollouts);
+    resumed.resume(file);
+    EXPECT_EQ(resumed.episode(), 64);
+    ASSERT_TRUE(resumed.run(nullptr, {}));
+
+    EXPECT_EQ(fingerprint(resumed.learner(), 24, 8), fingerprint(straight.learner(), 24, 8));
+    ASSERT_EQ(resumed.learningCurve().size(), straight.learningCurve().size());
+    for (std::size_t i = 0; i < resumed.learningCurve().size(); ++i)
+      EXPECT_EQ(resumed.learningCurve()[i].meanReward, straight.learningCurve()[i].meanReward);
+    ASSERT_EQ(resumed.validationCurve().size(), 3u);
+    EXPECT_EQ(resumed.validationCurve().back().meanReward, straight.validationCurve().back().meanReward);
+    EXPECT_EQ(resumed.bestValidation(), straight.bestValidation());
+    if (critic == "validityAndQuality") {
+      const std::vector<double> rewards = straight.buffer().recentRewards(300);
+      EXPECT_GT(std::count(rewards.begin(), rewards.end(), -1.0), 10) << "the toy gave too few failures";
+    }
   }
-  PolicyTrainer resumed(smallRun(300), toy, rollouts);
-  resumed.resume(file);
-  EXPECT_EQ(resumed.episode(), 64);
-  ASSERT_TRUE(resumed.run(nullptr, {}));
-
-  EXPECT_EQ(fingerprint(resumed.learner(), 24, 8), fingerprint(straight.learner(), 24, 8));
-  ASSERT_EQ(resumed.learningCurve().size(), straight.learningCurve().size());
-  for (std::size_t i = 0; i < resumed.learningCurve().size(); ++i)
-    EXPECT_EQ(resumed.learningCurve()[i].meanReward, straight.learningCurve()[i].meanReward);
-  ASSERT_EQ(resumed.validationCurve().size(), 3u);
-  EXPECT_EQ(resumed.validationCurve().back().meanReward, straight.validationCurve().back().meanReward);
-  EXPECT_EQ(resumed.bestValidation(), straight.bestValidation());
 }
 
 // The message of resuming `file` with these options; "accepted" when it was.
@@ -108,6 +118,9 @@ TEST(PolicyTrainer, ACheckpointOfAnotherRunOrACorruptFileIsRefusedWithItsName) {
   changed = smallRun(64);
   changed.hidden = {16, 8};
   EXPECT_NE(resumeError(changed, dir / "good.pt").find("networks are"), std::string::npos);
+  changed = smallRun(64);
+  changed.criticModel = "validityAndQuality";
+  EXPECT_NE(resumeError(changed, dir / "good.pt").find("validityAndQuality"), std::string::npos);
   changed = smallRun(640);  // more episodes or other threads: the same run
   changed.threads = 2;
   EXPECT_EQ(resumeError(changed, dir / "good.pt"), "accepted");

@@ -20,13 +20,28 @@ struct ActorCritic::Networks {
         actor(makeActor(l)),
         critic(makeCritic(l)),
         actorOptimizer(actor->parameters(), torch::optim::AdamOptions(rates.actor)),
-        criticOptimizer(critic->parameters(), torch::optim::AdamOptions(rates.critic)) {}
+        criticOptimizer(critic->parameters(), torch::optim::AdamOptions(rates.critic)) {
+    if (l.critic == CriticModel::validityAndQuality) {
+      validity = makeCritic(l);
+      validityOptimizer =
+          std::make_unique<torch::optim::Adam>(validity->parameters(), torch::optim::AdamOptions(rates.critic));
+    }
+  }
+
+  // The critic's estimate of the expected reward of each row of [s, a].
+  torch::Tensor expectedReward(const torch::Tensor& input) {
+    if (!validity) return critic->forward(input);
+    const torch::Tensor p = torch::sigmoid(validity->forward(input));
+    return p * (critic->forward(input) + 1.0) - 1.0;  // p q + (1 - p)(-1)
+  }
 
   NetworkLayout layout;
   FullyConnected actor;
-  FullyConnected critic;
+  FullyConnected critic;  // Q(s, a), or q(s, a) of a valid mesh with `validity`
   torch::optim::Adam actorOptimizer;
   torch::optim::Adam criticOptimizer;
+  FullyConnected validity{nullptr};  // the logit of p(s, a) (CriticModel::validityAndQuality)
+  std::unique_ptr<torch::optim::Adam> validityOptimizer;
 };
 
 ActorCritic::ActorCritic(const NetworkLayout& layout, const LearningRates& rates, std::uint64_t seed,
@@ -52,7 +67,7 @@ PolicyBatch ActorCritic::act(const PolicyBatch& states) const {
 Eigen::VectorXd ActorCritic::value(const PolicyBatch& states, const PolicyBatch& actions) const {
   torch::NoGradGuard noGrad;
   const torch::Tensor q =
-      networks_->critic->forward(torch::cat({tensorOf(states), tensorOf(actions)}, 1));
+      networks_->expectedReward(torch::cat({tensorOf(states), tensorOf(actions)}, 1));
   return batchOf(q).col(0);
 }
 
@@ -61,11 +76,29 @@ double ActorCritic::updateCritic(const PolicyBatch& states, const PolicyBatch& a
   Networks& n = *networks_;
   const torch::Tensor input = torch::cat({tensorOf(states), tensorOf(actions)}, 1);
   const torch::Tensor target = tensorOf(PolicyBatch(rewards));
+  if (!n.validity) {
+    n.criticOptimizer.zero_grad();
+    torch::Tensor loss = torch::mse_loss(n.critic->forward(input), target);
+    loss.backward();
+    n.criticOptimizer.step();
+    return loss.item<double>();
+  }
+  // The loss reported is the expected reward's squared error, comparable with `reward`'s.
+  double reported = 0;
+  {
+    torch::NoGradGuard noGrad;
+    reported = torch::mse_loss(n.expectedReward(input), target).item<double>();
+  }
+  // Valid meshes have Q in [0, 1]; invalid ones get exactly -1.
+  const torch::Tensor valid = (target > -0.5).to(torch::kFloat32);
+  n.validityOptimizer->zero_grad();
+  torch::binary_cross_entropy_with_logits(n.validity->forward(input), valid).backward();
+  n.validityOptimizer->step();
   n.criticOptimizer.zero_grad();
-  torch::Tensor loss = torch::mse_loss(n.critic->forward(input), target);
-  loss.backward();
+  const torch::Tensor squared = (n.critic->forward(input) - target).pow(2) * valid;
+  (squared.sum() / valid.sum().clamp_min(1.0)).backward();
   n.criticOptimizer.step();
-  return loss.item<double>();
+  return reported;
 }
 
 double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty) {
@@ -73,7 +106,7 @@ double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty) 
   const torch::Tensor s = tensorOf(states);
   n.actorOptimizer.zero_grad();
   const torch::Tensor u = n.actor->beforeOutput(s);
-  const torch::Tensor q = n.critic->forward(torch::cat({s, torch::tanh(u)}, 1)).mean();
+  const torch::Tensor q = n.expectedReward(torch::cat({s, torch::tanh(u)}, 1)).mean();
   torch::Tensor loss = -q;
   if (boundPenalty > 0) {
     const double edge = std::atanh(0.95);
@@ -81,7 +114,8 @@ double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty) 
   }
   loss.backward();
   n.actorOptimizer.step();
-  // The backward pass also left gradients in the critic; its own step clears them first.
+  // The backward pass also left gradients in the critic (and validity); their own steps
+  // clear them first.
   return q.item<double>();
 }
 
@@ -96,6 +130,13 @@ void ActorCritic::save(torch::serialize::OutputArchive& archive) const {
   archive.write("critic", critic);
   archive.write("actorOptimizer", actorOptimizer);
   archive.write("criticOptimizer", criticOptimizer);
+  if (n.validity) {
+    torch::serialize::OutputArchive validity, validityOptimizer;
+    n.validity->save(validity);
+    n.validityOptimizer->save(validityOptimizer);
+    archive.write("validity", validity);
+    archive.write("validityOptimizer", validityOptimizer);
+  }
 }
 
 void ActorCritic::load(torch::serialize::InputArchive& archive) {
@@ -109,6 +150,13 @@ void ActorCritic::load(torch::serialize::InputArchive& archive) {
   n.critic->load(critic);
   n.actorOptimizer.load(actorOptimizer);
   n.criticOptimizer.load(criticOptimizer);
+  if (n.validity) {
+    torch::serialize::InputArchive validity, validityOptimizer;
+    archive.read("validity", validity);
+    archive.read("validityOptimizer", validityOptimizer);
+    n.validity->load(validity);
+    n.validityOptimizer->load(validityOptimizer);
+  }
 }
 
 void ActorCritic::saveActor(const std::filesystem::path& file) const {

@@ -1,5 +1,6 @@
 #include "passageMesh/policy/PolicyTrainOptions.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -23,6 +24,7 @@ NetworkLayout PolicyTrainOptions::layout(int stateSize, int actionSize) const {
   l.actionSize = actionSize;
   l.hidden = hidden;
   l.leakySlope = leakySlope;
+  l.critic = criticModel == "validityAndQuality" ? CriticModel::validityAndQuality : CriticModel::reward;
   return l;
 }
 
@@ -60,6 +62,22 @@ std::function<void(const Dictionary&, PolicyTrainOptions&)> readPositive(const c
       throw InputError(d.source(), d.line(name), "<" + std::string(name) + "> must be " +
                                                      (zeroAllowed ? "at least 0" : "positive"));
     field(o) = v;
+  };
+}
+
+// A word from a fixed list, e.g. <actorStart> random or defaults.
+std::function<void(const Dictionary&, PolicyTrainOptions&)> readChoice(const char* name,
+                                                                       std::string PolicyTrainOptions::*member,
+                                                                       std::vector<std::string> choices) {
+  return [=](const Dictionary& d, PolicyTrainOptions& o) {
+    const std::string v = d.text(name);
+    if (std::find(choices.begin(), choices.end(), v) == choices.end()) {
+      std::string list;
+      for (std::size_t k = 0; k < choices.size(); ++k)
+        list += std::string(k == 0 ? "" : k + 1 == choices.size() ? " or " : ", ") + "'" + choices[k] + "'";
+      throw InputError(d.source(), d.line(name), "<" + std::string(name) + "> is " + list + ", not '" + v + "'");
+    }
+    o.*member = v;
   };
 }
 
@@ -118,23 +136,10 @@ const std::vector<Key>& keys() {
       {"validationSeed", readInteger("validationSeed", &O::validationSeed, 0), [](const O& o) { return std::to_string(o.validationSeed); }},
       {"checkpointEvery", readInteger("checkpointEvery", &O::checkpointEvery, 1), [](const O& o) { return std::to_string(o.checkpointEvery); }},
       {"logEvery", readInteger("logEvery", &O::logEvery, 1), [](const O& o) { return std::to_string(o.logEvery); }},
-      {"actorStart",
-       [](const Dictionary& d, O& o) {
-         const std::string v = d.text("actorStart");
-         if (v != "random" && v != "defaults")
-           throw InputError(d.source(), d.line("actorStart"), "<actorStart> is 'random' or 'defaults', not '" + v + "'");
-         o.actorStart = v;
-       },
-       [](const O& o) { return o.actorStart; }},
-      {"edgeRadii",
-       [](const Dictionary& d, O& o) {
-         const std::string v = d.text("edgeRadii");
-         if (v != "uniform" && v != "halfLogUniform")
-           throw InputError(d.source(), d.line("edgeRadii"),
-                            "<edgeRadii> is 'halfLogUniform' or 'uniform', not '" + v + "'");
-         o.edgeRadii = v;
-       },
-       [](const O& o) { return o.edgeRadii; }},
+      {"actorStart", readChoice("actorStart", &O::actorStart, {"random", "defaults"}), [](const O& o) { return o.actorStart; }},
+      {"edgeRadii", readChoice("edgeRadii", &O::edgeRadii, {"halfLogUniform", "uniform"}), [](const O& o) { return o.edgeRadii; }},
+      {"criticModel", readChoice("criticModel", &O::criticModel, {"reward", "validityAndQuality"}),
+       [](const O& o) { return o.criticModel; }},
       {"seed", readInteger("seed", &O::seed, 0), [](const O& o) { return std::to_string(o.seed); }},
       {"threads", readInteger("threads", &O::threads, 0), [](const O& o) { return std::to_string(o.threads); }},
   };

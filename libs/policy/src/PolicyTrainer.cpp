@@ -20,6 +20,7 @@ std::string layoutText(const NetworkLayout& l) {
   std::ostringstream s;
   s.precision(17);
   s << l.stateSize << " " << l.actionSize << " [" << l.hiddenText() << "] " << l.leakySlope;
+  if (l.critic == CriticModel::validityAndQuality) s << " validityAndQuality";
   return s.str();
 }
 
@@ -237,7 +238,7 @@ void PolicyTrainer::resume(const std::filesystem::path& file) {
     archive.read("layout", value);
     if (value.toStringRef() != layoutText(learner_.layout()))
       throw InputError(name, 0, "the checkpoint's networks are " + value.toStringRef() +
-                                    " (state, action, [hidden], slope), this run's " +
+                                    " (state, action, [hidden], slope[, critic model]), this run's " +
                                     layoutText(learner_.layout()));
     archive.read("seed", value);
     if (value.toStringRef() != std::to_string(options_.seed))

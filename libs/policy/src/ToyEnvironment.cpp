@@ -4,8 +4,8 @@
 
 namespace passageMesh {
 
-ToyEnvironment::ToyEnvironment(int stateSize, int actionSize, std::uint64_t seed)
-    : stateSize_(stateSize), actionSize_(actionSize) {
+ToyEnvironment::ToyEnvironment(int stateSize, int actionSize, std::uint64_t seed, double cliff)
+    : stateSize_(stateSize), actionSize_(actionSize), cliff_(cliff) {
   std::mt19937_64 rng(seed);
   std::vector<double> w(static_cast<std::size_t>(stateSize * actionSize));
   for (int i = 0; i < actionSize; ++i) {
@@ -37,10 +37,11 @@ EpisodeTask ToyEnvironment::draw(std::uint64_t seed, std::uint64_t episode) cons
   task.state.resize(static_cast<std::size_t>(stateSize_));
   for (double& s : task.state) s = 2.0 * uniform01(rng) - 1.0;
   auto target = std::make_shared<const std::vector<double>>(optimum(task.state));
-  task.reward = [target](const std::vector<double>& action) {
+  task.reward = [target, cliff = cliff_](const std::vector<double>& action) {
     double sum = 0;
     for (std::size_t k = 0; k < target->size(); ++k) {
       const double d = action.at(k) - (*target)[k];
+      if (k == 0 && d > cliff) return -1.0;
       sum += d * d;
     }
     return 1.0 - std::sqrt(sum / static_cast<double>(target->size()));

@@ -1,6 +1,7 @@
 #pragma once
 // The single-step actor-critic learner (method.md section 6): the critic Q(s, a) fitted to
-// the rewards by mean squared error, the actor pi(s) moved up the critic's gradient
+// the rewards by mean squared error (or split into validity and quality, CriticModel in
+// NetworkLayout.hpp), the actor pi(s) moved up the critic's gradient
 // (deterministic policy gradient), each with its own Adam optimiser. LibTorch, CPU, float32,
 // one thread; the LibTorch types stay inside the .cpp (pointer to implementation).
 #include <cstdint>
@@ -36,10 +37,11 @@ class ActorCritic {
 
   // pi(s) for each row of `states`.
   PolicyBatch act(const PolicyBatch& states) const;
-  // Q(s, a) for each row.
+  // Q(s, a), the critic's expected reward, for each row.
   Eigen::VectorXd value(const PolicyBatch& states, const PolicyBatch& actions) const;
 
-  // One Adam step of the critic on mean((Q(s, a) - r)^2); returns that loss before the step.
+  // One Adam step of the critic on mean((Q(s, a) - r)^2) (with validityAndQuality: one step
+  // of each network on its own loss); returns mean((Q(s, a) - r)^2) before the step.
   double updateCritic(const PolicyBatch& states, const PolicyBatch& actions,
                       const Eigen::VectorXd& rewards);
   // One Adam step of the actor on -mean(Q(s, pi(s))) + boundPenalty * mean over states and

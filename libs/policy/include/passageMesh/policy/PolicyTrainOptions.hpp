@@ -48,6 +48,9 @@ struct PolicyTrainOptions {
   // apart) or "uniform" (uniform draws, linear in the state: the policies trained before
   // the twelfth session, 2026-12-04). docs/policy.md measures both.
   std::string edgeRadii = "halfLogUniform";
+  // What the critic predicts: "reward" (the paper's) or "validityAndQuality" (CriticModel,
+  // NetworkLayout.hpp; docs/policy.md measures both).
+  std::string criticModel = "reward";
   std::uint64_t seed = 1;         // weights, episodes, noise and minibatches
   int threads = 0;                // rollout threads per process (0 = all cores)
 
