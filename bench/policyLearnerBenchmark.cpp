@@ -6,7 +6,7 @@
 //     HIDDEN: layer widths separated by commas ("512,256,256,128", the paper's)
 //     CRITIC_MODEL: reward (default) or validityAndQuality (policyTrainDict's criticModel)
 //     CLIFF: actions whose first entry is more than CLIFF above the optimum's get -1
-//            (ToyEnvironment; default: none)
+//            (ToyEnvironment; default, or inf: none)
 //     NOISE: sigma of the first 1000 episodes, then NOISE / 3 (cos + 1), the shipped
 //            policy's schedule at 0.3 (default: the paper's, 1 then 0.25 (cos + 1))
 // Prints the RMS action error on 1000 unseen states every tenth of the run and the learner
@@ -40,11 +40,11 @@ int main(int argc, char* argv[]) {
   if (argc > 6) options.actorUpdateEvery = std::atoi(argv[6]);
   if (argc > 7) options.minibatch = std::atoi(argv[7]);
   if (argc > 8) options.criticModel = argv[8];
+  const double cliff = argc > 9 ? std::atof(argv[9]) : std::numeric_limits<double>::infinity();
   if (argc > 10) {
     options.noiseStartSigma = std::atof(argv[10]);
     options.noiseAmplitude = options.noiseStartSigma / 3;
   }
-  const double cliff = argc > 9 ? std::atof(argv[9]) : std::numeric_limits<double>::infinity();
   options.validationPassages = 0;
   options.threads = 1;
 

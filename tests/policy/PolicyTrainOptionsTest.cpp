@@ -14,11 +14,13 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   o.learningRates = {3e-4, 1e-3};
   o.noiseAmplitude = 0.125;
   o.seed = 77;
+  o.criticModel = "validityAndQuality";
   const auto file = testData::writeTempFile("policyTrainDict", "dict.xml", policyTrainDictXml(o));
   const PolicyTrainOptions back = readPolicyTrainDict(file);
   EXPECT_EQ(policyTrainDictXml(back), policyTrainDictXml(o));
   EXPECT_EQ(back.hidden, (std::vector<int>{32, 16}));
   EXPECT_EQ(back.learningRates.actor, 3e-4);
+  EXPECT_EQ(back.criticModel, "validityAndQuality");
   EXPECT_EQ(readPolicyTrainDict(file.parent_path() / "missing.xml").episodes, PolicyTrainOptions{}.episodes);
 }
 
@@ -45,6 +47,8 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
   EXPECT_NE(bad("<episodes>0</episodes>").find("bad.xml:2"), std::string::npos);
   EXPECT_NE(bad("<hiddenLayers>512 x</hiddenLayers>").find("hiddenLayers"), std::string::npos);
   EXPECT_NE(bad("<actorLearningRate>-1</actorLearningRate>").find("positive"), std::string::npos);
+  EXPECT_NE(bad("<criticModel>quality</criticModel>").find("<criticModel> is 'reward' or 'validityAndQuality', not 'quality'"),
+            std::string::npos);
   EXPECT_NE(bad("<epsiodes>10</epsiodes>").find("epsiodes"), std::string::npos);
   EXPECT_NE(bad("<batchEpisodes>3000000000</batchEpisodes>").find("must be in [1, 2147483647]"), std::string::npos);
   EXPECT_NE(bad("<minibatch>200</minibatch><bufferCapacity>100</bufferCapacity>").find("never start"),

@@ -120,7 +120,17 @@ TEST(PolicyTrainer, ACheckpointOfAnotherRunOrACorruptFileIsRefusedWithItsName) {
   EXPECT_NE(resumeError(changed, dir / "good.pt").find("networks are"), std::string::npos);
   changed = smallRun(64);
   changed.criticModel = "validityAndQuality";
-  EXPECT_NE(resumeError(changed, dir / "good.pt").find("validityAndQuality"), std::string::npos);
+  const std::string otherCritic = resumeError(changed, dir / "good.pt");
+  EXPECT_NE(otherCritic.find("networks are 24 8 [16 16] 0.01 (state"), std::string::npos) << otherCritic;
+  EXPECT_NE(otherCritic.find("this run's 24 8 [16 16] 0.01 validityAndQuality"), std::string::npos) << otherCritic;
+  {
+    PolicyTrainer split(changed, toy, rollouts);
+    split.run(nullptr, {});
+    split.saveCheckpoint(dir / "split.pt");
+  }
+  const std::string backToReward = resumeError(smallRun(64), dir / "split.pt");
+  EXPECT_NE(backToReward.find("networks are 24 8 [16 16] 0.01 validityAndQuality"), std::string::npos) << backToReward;
+  EXPECT_EQ(backToReward.find('\n'), std::string::npos) << backToReward;
   changed = smallRun(640);  // more episodes or other threads: the same run
   changed.threads = 2;
   EXPECT_EQ(resumeError(changed, dir / "good.pt"), "accepted");

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "passageMesh/policy/PolicyNetworks.hpp"
+#include "passageMesh/quality/MeshQuality.hpp"
 #include "TorchTensors.hpp"
 
 namespace passageMesh {
@@ -22,6 +23,8 @@ struct ActorCritic::Networks {
         actorOptimizer(actor->parameters(), torch::optim::AdamOptions(rates.actor)),
         criticOptimizer(critic->parameters(), torch::optim::AdamOptions(rates.critic)) {
     if (l.critic == CriticModel::validityAndQuality) {
+      // Built after the critic, so `reward` runs start from the same weights as before
+      // the model existed; it learns at the critic's rate, being a critic too.
       validity = makeCritic(l);
       validityOptimizer =
           std::make_unique<torch::optim::Adam>(validity->parameters(), torch::optim::AdamOptions(rates.critic));
@@ -83,22 +86,20 @@ double ActorCritic::updateCritic(const PolicyBatch& states, const PolicyBatch& a
     n.criticOptimizer.step();
     return loss.item<double>();
   }
-  // The loss reported is the expected reward's squared error, comparable with `reward`'s.
-  double reported = 0;
-  {
-    torch::NoGradGuard noGrad;
-    reported = torch::mse_loss(n.expectedReward(input), target).item<double>();
-  }
-  // Valid meshes have Q in [0, 1]; invalid ones get exactly -1.
-  const torch::Tensor valid = (target > -0.5).to(torch::kFloat32);
+  // Valid meshes have Q in [0, 1]; an invalid one gets invalidMeshQuality (-1).
+  const torch::Tensor valid = (target > invalidMeshQuality).to(torch::kFloat32);
   n.validityOptimizer->zero_grad();
-  torch::binary_cross_entropy_with_logits(n.validity->forward(input), valid).backward();
+  const torch::Tensor logit = n.validity->forward(input);
+  torch::binary_cross_entropy_with_logits(logit, valid).backward();
   n.validityOptimizer->step();
   n.criticOptimizer.zero_grad();
-  const torch::Tensor squared = (n.critic->forward(input) - target).pow(2) * valid;
-  (squared.sum() / valid.sum().clamp_min(1.0)).backward();
+  const torch::Tensor q = n.critic->forward(input);
+  ((q - target).pow(2) * valid).sum().div(valid.sum().clamp_min(1.0)).backward();
   n.criticOptimizer.step();
-  return reported;
+  // Reported: the expected reward's squared error before the steps, comparable with
+  // `reward`'s loss.
+  const torch::Tensor expected = torch::sigmoid(logit.detach()) * (q.detach() + 1.0) - 1.0;
+  return torch::mse_loss(expected, target).item<double>();
 }
 
 double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty) {

@@ -8,6 +8,7 @@
 #include "passageMesh/passage/PassageCase.hpp"
 #include "passageMesh/passage/PassageSampler.hpp"
 #include "passageMesh/policy/PolicyScaling.hpp"
+#include "passageMesh/quality/MeshQuality.hpp"
 #include "passageMesh/workflow/MeshQualityObjective.hpp"
 
 namespace passageMesh {
@@ -33,7 +34,7 @@ RewardSummary summarizeRewards(const std::vector<double>& rewards) {
   double sum = 0;
   for (double r : rewards) {
     sum += r;
-    s.valid += r > -1.0;
+    s.valid += r > invalidMeshQuality;
   }
   s.mean = sum / s.count;
   std::vector<double> sorted = rewards;

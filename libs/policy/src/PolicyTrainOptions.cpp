@@ -24,6 +24,8 @@ NetworkLayout PolicyTrainOptions::layout(int stateSize, int actionSize) const {
   l.actionSize = actionSize;
   l.hidden = hidden;
   l.leakySlope = leakySlope;
+  if (criticModel != "reward" && criticModel != "validityAndQuality")
+    throw InputError("criticModel is 'reward' or 'validityAndQuality', not '" + criticModel + "'");
   l.critic = criticModel == "validityAndQuality" ? CriticModel::validityAndQuality : CriticModel::reward;
   return l;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
 
 #include "passageMesh/core/InputError.hpp"
@@ -20,6 +21,7 @@ std::string layoutText(const NetworkLayout& l) {
   std::ostringstream s;
   s.precision(17);
   s << l.stateSize << " " << l.actionSize << " [" << l.hiddenText() << "] " << l.leakySlope;
+  // Checkpoints from before the critic models name none: `reward` stays unnamed.
   if (l.critic == CriticModel::validityAndQuality) s << " validityAndQuality";
   return s.str();
 }
@@ -31,15 +33,23 @@ std::string settingsText(const PolicyTrainOptions& options) {
   return text;
 }
 
-// "<key> was X, is Y" for the first line that differs; empty when none does.
-std::string firstDifference(const std::string& before, const std::string& now) {
-  std::istringstream a(before), b(now);
-  for (std::string x, y; std::getline(a, x) && std::getline(b, y);)
-    if (x != y) {
-      const std::string key = x.substr(0, x.find(' '));
-      return "<" + key + "> was " + x.substr(x.find(' ') + 1) + ", is " + y.substr(y.find(' ') + 1);
-    }
-  return before == now ? "" : "a setting was added or removed";
+// "<key> was X, is Y" for the first setting that differs; empty when none does. A key the
+// checkpoint lacks (added to the dictionary after it was written) counts as its default.
+std::string firstDifference(const std::string& before, const PolicyTrainOptions& options) {
+  std::map<std::string, std::string> recorded;
+  std::istringstream lines(before);
+  for (std::string line; std::getline(lines, line);)
+    recorded[line.substr(0, line.find(' '))] = line.find(' ') == std::string::npos ? "" : line.substr(line.find(' ') + 1);
+  const auto defaults = trajectorySettings(PolicyTrainOptions{});
+  const auto now = trajectorySettings(options);
+  for (std::size_t k = 0; k < now.size(); ++k) {
+    const auto& [key, value] = now[k];
+    const auto found = recorded.find(key);
+    const std::string was = found != recorded.end() ? found->second : defaults[k].second;
+    if (was != value) return "<" + key + "> was " + was + ", is " + value;
+    if (found != recorded.end()) recorded.erase(found);
+  }
+  return recorded.empty() ? "" : "<" + recorded.begin()->first + "> is no longer a setting";
 }
 
 // The validation summary of one set of rewards.
@@ -246,7 +256,7 @@ void PolicyTrainer::resume(const std::filesystem::path& file) {
                                     ", this run has seed " + std::to_string(options_.seed));
     // Checkpoints before the settings were recorded have none to compare.
     if (archive.try_read("settings", value)) {
-      const std::string difference = firstDifference(value.toStringRef(), settingsText(options_));
+      const std::string difference = firstDifference(value.toStringRef(), options_);
       if (!difference.empty())
         throw InputError(name, 0, "the checkpoint's run had other settings (" + difference +
                                       "): resume with its policyTrainDict, or start afresh");

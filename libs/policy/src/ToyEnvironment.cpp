@@ -38,10 +38,10 @@ EpisodeTask ToyEnvironment::draw(std::uint64_t seed, std::uint64_t episode) cons
   for (double& s : task.state) s = 2.0 * uniform01(rng) - 1.0;
   auto target = std::make_shared<const std::vector<double>>(optimum(task.state));
   task.reward = [target, cliff = cliff_](const std::vector<double>& action) {
+    if (action.at(0) - target->at(0) > cliff) return -1.0;
     double sum = 0;
     for (std::size_t k = 0; k < target->size(); ++k) {
       const double d = action.at(k) - (*target)[k];
-      if (k == 0 && d > cliff) return -1.0;
       sum += d * d;
     }
     return 1.0 - std::sqrt(sum / static_cast<double>(target->size()));
