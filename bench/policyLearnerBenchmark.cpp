@@ -2,13 +2,14 @@
 // known optimum, cheap reward), so the learner's cost and its learning can be measured
 // apart from the mesher (docs/benchmarks.md "Policy learner").
 //   policyLearnerBenchmark [EPISODES [HIDDEN [LEARNING_RATE [SEED [CRITIC_UPDATES
-//                          [ACTOR_EVERY [MINIBATCH [CRITIC_MODEL [CLIFF [NOISE]]]]]]]]]]
+//                          [ACTOR_EVERY [MINIBATCH [CRITIC_MODEL [CLIFF [NOISE [BARRIER]]]]]]]]]]]
 //     HIDDEN: layer widths separated by commas ("512,256,256,128", the paper's)
 //     CRITIC_MODEL: reward (default) or validityAndQuality (policyTrainDict's criticModel)
 //     CLIFF: actions whose first entry is more than CLIFF above the optimum's get -1
 //            (ToyEnvironment; default, or inf: none)
 //     NOISE: sigma of the first 1000 episodes, then NOISE / 3 (cos + 1), the shipped
 //            policy's schedule at 0.3 (default: the paper's, 1 then 0.25 (cos + 1))
+//     BARRIER: validityBarrier (with validityAndQuality; default 0: the expected reward)
 // Prints the RMS action error on 1000 unseen states every tenth of the run and the learner
 // time per episode (one thread).
 #include <chrono>
@@ -45,6 +46,7 @@ int main(int argc, char* argv[]) {
     options.noiseStartSigma = std::atof(argv[10]);
     options.noiseAmplitude = options.noiseStartSigma / 3;
   }
+  if (argc > 11) options.validityBarrier = std::atof(argv[11]);
   options.validationPassages = 0;
   options.threads = 1;
 
@@ -52,9 +54,9 @@ int main(int argc, char* argv[]) {
   ThreadRollouts rollouts(1);
   PolicyTrainer trainer(options, toy, rollouts);
   std::printf("toy problem 24 -> 8, hidden %s, learning rates %s, seed %llu, critic updates %d per "
-              "episode, actor every %d, minibatch %d, critic %s, cliff %g\n", hidden.c_str(), rates.c_str(),
+              "episode, actor every %d, minibatch %d, critic %s (barrier %g), cliff %g\n", hidden.c_str(), rates.c_str(),
               static_cast<unsigned long long>(options.seed), options.criticUpdatesPerEpisode,
-              options.actorUpdateEvery, options.minibatch, options.criticModel.c_str(), cliff);
+              options.actorUpdateEvery, options.minibatch, options.criticModel.c_str(), options.validityBarrier, cliff);
   const auto start = std::chrono::steady_clock::now();
   long next = options.episodes / 10;
   PolicyTrainer::Events events;

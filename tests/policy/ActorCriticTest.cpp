@@ -103,24 +103,29 @@ TEST(ActorCritic, LearnsAToyProblemsOptimalActions) {
 
 // The optimum's first entry lies 0.05 below a region of failures (reward -1). A critic
 // split into validity and quality learns it as closely as the plain critic learns the toy
-// without failures; the plain critic, whose squared error mixes the -1 into the quality
-// fit, stays about 0.1 away (bench/policyLearnerBenchmark, docs/policy.md).
+// without failures, with the actor climbing the expected reward or q + 0.1 log p; the
+// plain critic, whose squared error mixes the -1 into the quality fit, stays about 0.1
+// away (bench/policyLearnerBenchmark, docs/policy.md).
 TEST(ActorCritic, TheValidityAndQualityCriticLearnsAnOptimumBesideFailures) {
-  PolicyTrainOptions options;
-  options.episodes = 40000;
-  options.hidden = {64, 64};
-  options.learningRates = {3e-4, 1e-3};
-  options.noiseStartSigma = 0.3;  // the shipped policy's exploration
-  options.noiseAmplitude = 0.1;
-  options.criticModel = "validityAndQuality";
-  options.validationPassages = 0;
-  options.threads = 1;
-  const ToyEnvironment toy(24, 8, 7, 0.05);
-  ThreadRollouts rollouts(1);
-  PolicyTrainer trainer(options, toy, rollouts);
-  ASSERT_TRUE(trainer.run(nullptr, {}));
-  const double after = toy.actionError(trainer.learner(), 99, 1000);
-  EXPECT_LT(after, 0.05) << "RMS action error on unseen states";
-  const std::vector<double> rewards = trainer.buffer().recentRewards(1000);
-  EXPECT_GT(std::count(rewards.begin(), rewards.end(), -1.0), 50) << "exploration met too few failures";
+  for (const double barrier : {0.0, 0.1}) {
+    SCOPED_TRACE("validityBarrier " + std::to_string(barrier));
+    PolicyTrainOptions options;
+    options.episodes = 40000;
+    options.hidden = {64, 64};
+    options.learningRates = {3e-4, 1e-3};
+    options.noiseStartSigma = 0.3;  // the shipped policy's exploration
+    options.noiseAmplitude = 0.1;
+    options.criticModel = "validityAndQuality";
+    options.validityBarrier = barrier;
+    options.validationPassages = 0;
+    options.threads = 1;
+    const ToyEnvironment toy(24, 8, 7, 0.05);
+    ThreadRollouts rollouts(1);
+    PolicyTrainer trainer(options, toy, rollouts);
+    ASSERT_TRUE(trainer.run(nullptr, {}));
+    const double after = toy.actionError(trainer.learner(), 99, 1000);
+    EXPECT_LT(after, 0.05) << "RMS action error on unseen states";
+    const std::vector<double> rewards = trainer.buffer().recentRewards(1000);
+    EXPECT_GT(std::count(rewards.begin(), rewards.end(), -1.0), 50) << "exploration met too few failures";
+  }
 }

@@ -15,12 +15,14 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   o.noiseAmplitude = 0.125;
   o.seed = 77;
   o.criticModel = "validityAndQuality";
+  o.validityBarrier = 0.125;
   const auto file = testData::writeTempFile("policyTrainDict", "dict.xml", policyTrainDictXml(o));
   const PolicyTrainOptions back = readPolicyTrainDict(file);
   EXPECT_EQ(policyTrainDictXml(back), policyTrainDictXml(o));
   EXPECT_EQ(back.hidden, (std::vector<int>{32, 16}));
   EXPECT_EQ(back.learningRates.actor, 3e-4);
   EXPECT_EQ(back.criticModel, "validityAndQuality");
+  EXPECT_EQ(back.validityBarrier, 0.125);
   EXPECT_EQ(readPolicyTrainDict(file.parent_path() / "missing.xml").episodes, PolicyTrainOptions{}.episodes);
 }
 
@@ -49,6 +51,7 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
   EXPECT_NE(bad("<actorLearningRate>-1</actorLearningRate>").find("positive"), std::string::npos);
   EXPECT_NE(bad("<criticModel>quality</criticModel>").find("<criticModel> is 'reward' or 'validityAndQuality', not 'quality'"),
             std::string::npos);
+  EXPECT_NE(bad("<validityBarrier>-0.1</validityBarrier>").find("at least 0"), std::string::npos);
   EXPECT_NE(bad("<epsiodes>10</epsiodes>").find("epsiodes"), std::string::npos);
   EXPECT_NE(bad("<batchEpisodes>3000000000</batchEpisodes>").find("must be in [1, 2147483647]"), std::string::npos);
   EXPECT_NE(bad("<minibatch>200</minibatch><bufferCapacity>100</bufferCapacity>").find("never start"),

@@ -102,13 +102,22 @@ double ActorCritic::updateCritic(const PolicyBatch& states, const PolicyBatch& a
   return torch::mse_loss(expected, target).item<double>();
 }
 
-double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty) {
+double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty, double validityBarrier) {
   Networks& n = *networks_;
   const torch::Tensor s = tensorOf(states);
   n.actorOptimizer.zero_grad();
   const torch::Tensor u = n.actor->beforeOutput(s);
-  const torch::Tensor q = n.expectedReward(torch::cat({s, torch::tanh(u)}, 1)).mean();
-  torch::Tensor loss = -q;
+  const torch::Tensor input = torch::cat({s, torch::tanh(u)}, 1);
+  torch::Tensor q, loss;
+  if (n.validity && validityBarrier > 0) {
+    // q + lambda log p: the quality of a valid mesh, with a barrier that only pushes where
+    // failures are likely (docs/policy.md).
+    q = n.critic->forward(input).mean();
+    loss = -q - validityBarrier * torch::log_sigmoid(n.validity->forward(input)).mean();
+  } else {
+    q = n.expectedReward(input).mean();
+    loss = -q;
+  }
   if (boundPenalty > 0) {
     const double edge = std::atanh(0.95);
     loss = loss + boundPenalty * torch::relu(u.abs() - edge).pow(2).mean();

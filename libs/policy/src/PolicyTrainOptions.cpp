@@ -142,6 +142,8 @@ const std::vector<Key>& keys() {
       {"edgeRadii", readChoice("edgeRadii", &O::edgeRadii, {"halfLogUniform", "uniform"}), [](const O& o) { return o.edgeRadii; }},
       {"criticModel", readChoice("criticModel", &O::criticModel, {"reward", "validityAndQuality"}),
        [](const O& o) { return o.criticModel; }},
+      {"validityBarrier", readPositive("validityBarrier", [](O& o) -> double& { return o.validityBarrier; }, true),
+       [](const O& o) { return exact(o.validityBarrier); }},
       {"seed", readInteger("seed", &O::seed, 0), [](const O& o) { return std::to_string(o.seed); }},
       {"threads", readInteger("threads", &O::threads, 0), [](const O& o) { return std::to_string(o.threads); }},
   };

@@ -117,7 +117,7 @@ void PolicyTrainer::learnFrom(const std::vector<double>& state, const std::vecto
     }
     if (episode_ % options_.actorUpdateEvery == 0) {
       buffer_.sample(options_.minibatch, minibatchRandom_, s, a, r);
-      learner_.updateActor(s, options_.actionBoundPenalty);
+      learner_.updateActor(s, options_.actionBoundPenalty, options_.validityBarrier);
     }
   }
   if (episode_ % options_.logEvery == 0) {

@@ -47,7 +47,10 @@ class ActorCritic {
   // One Adam step of the actor on -mean(Q(s, pi(s))) + boundPenalty * mean over states and
   // actions of max(0, |u| - atanh(0.95))^2, u the actor's output before tanh; returns mean
   // Q(s, pi(s)) before the step.
-  double updateActor(const PolicyBatch& states, double boundPenalty = 0);
+  // With CriticModel::validityAndQuality and validityBarrier > 0 the actor climbs
+  // q(s, a) + validityBarrier * log p(s, a) instead of the expected reward (and returns
+  // mean q).
+  double updateActor(const PolicyBatch& states, double boundPenalty = 0, double validityBarrier = 0);
 
   // Both networks and both optimisers' states, for checkpoints.
   void save(torch::serialize::OutputArchive& archive) const;

@@ -51,6 +51,9 @@ struct PolicyTrainOptions {
   // What the critic predicts: "reward" (the paper's) or "validityAndQuality" (CriticModel,
   // NetworkLayout.hpp; docs/policy.md measures both).
   std::string criticModel = "reward";
+  // With validityAndQuality: 0 makes the actor climb the expected reward; lambda > 0 makes
+  // it climb q + lambda log p (ActorCritic::updateActor).
+  double validityBarrier = 0;
   std::uint64_t seed = 1;         // weights, episodes, noise and minibatches
   int threads = 0;                // rollout threads per process (0 = all cores)
 
