@@ -52,6 +52,12 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
   EXPECT_NE(bad("<criticModel>quality</criticModel>").find("<criticModel> is 'reward' or 'validityAndQuality', not 'quality'"),
             std::string::npos);
   EXPECT_NE(bad("<validityBarrier>-0.1</validityBarrier>").find("at least 0"), std::string::npos);
+  // A barrier on a critic without a validity network would be silently ignored.
+  EXPECT_NE(bad("<criticModel>reward</criticModel>\n<validityBarrier>0.1</validityBarrier>")
+                .find("bad.xml:3: <validityBarrier> needs <criticModel>validityAndQuality"),
+            std::string::npos);
+  EXPECT_NE(bad("<validityBarrier>0.1</validityBarrier>").find("needs <criticModel>"), std::string::npos);
+  EXPECT_EQ(bad("<validityBarrier>0</validityBarrier>"), "accepted");
   EXPECT_NE(bad("<epsiodes>10</epsiodes>").find("epsiodes"), std::string::npos);
   EXPECT_NE(bad("<batchEpisodes>3000000000</batchEpisodes>").find("must be in [1, 2147483647]"), std::string::npos);
   EXPECT_NE(bad("<minibatch>200</minibatch><bufferCapacity>100</bufferCapacity>").find("never start"),

@@ -165,26 +165,45 @@ TEST(PolicyTrainer, PassageTrainingGivesTheSameWeightsOnOneOrTwoThreads) {
 TEST(PolicyTrainer, TheValidationScoresTheActionsOfOneStateForwardPasses) {
   const ToyEnvironment toy(24, 8, 3);
   ThreadRollouts rollouts(1);
-  PolicyTrainOptions o = smallRun(32);
+  PolicyTrainOptions o = smallRun(64);
   o.hidden = {512, 256, 256, 128};  // the paper's networks: batching changes their rounding
   o.validationEvery = 32;
   o.validationPassages = 50;
+  // The mean reward of the trainer's weights through the files, as policyMesh reads them.
+  const auto throughPolicyFiles = [&](const PolicyTrainer& trainer) {
+    const auto dir = testData::tempFolder("validationOneState");
+    std::filesystem::create_directories(dir);
+    writePolicyFiles(dir / "policy.xml", trainer.learner(), policyStateScaling(BladeParameterRange::readDefault()),
+                     PolicyProvenance{});
+    const Policy policy = Policy::load(dir / "policy.xml");
+    double sum = 0;
+    for (int i = 0; i < o.validationPassages; ++i) {
+      const EpisodeTask task = toy.draw(o.validationSeed, static_cast<std::uint64_t>(i));
+      PolicyState state;
+      std::copy(task.state.begin(), task.state.end(), state.begin());
+      const PolicyAction action = policy.act(state);
+      sum += task.reward(std::vector<double>(action.begin(), action.end()));
+    }
+    return sum / o.validationPassages;
+  };
+  // Stopped at episode 48, between the validations at 32 and 64 (as by Ctrl-C).
   PolicyTrainer trainer(o, toy, rollouts);
-  ASSERT_TRUE(trainer.run(nullptr, {}));
+  std::atomic<bool> stop{false};
+  PolicyTrainer::Events events;
+  events.afterBatch = [&](const PolicyTrainer& t) { stop = t.episode() >= 48; };
+  ASSERT_FALSE(trainer.run(&stop, events));
+  ASSERT_EQ(trainer.episode(), 48);
   ASSERT_EQ(trainer.validationCurve().size(), 1u);
-  // Through the files, as policyMesh reads them.
-  const auto dir = testData::tempFolder("validationOneState");
-  std::filesystem::create_directories(dir);
-  writePolicyFiles(dir / "policy.xml", trainer.learner(), policyStateScaling(BladeParameterRange::readDefault()),
-                   PolicyProvenance{});
-  const Policy policy = Policy::load(dir / "policy.xml");
-  double sum = 0;
-  for (int i = 0; i < o.validationPassages; ++i) {
-    const EpisodeTask task = toy.draw(o.validationSeed, static_cast<std::uint64_t>(i));
-    PolicyState state;
-    std::copy(task.state.begin(), task.state.end(), state.begin());
-    const PolicyAction action = policy.act(state);
-    sum += task.reward(std::vector<double>(action.begin(), action.end()));
-  }
-  EXPECT_EQ(trainer.validationCurve()[0].meanReward, sum / o.validationPassages);
+  EXPECT_EQ(trainer.validationCurve()[0].episode, 32);
+  const ValidationRecord now = trainer.validateCurrentPolicy();
+  EXPECT_EQ(now.episode, 48);
+  EXPECT_EQ(now.passages, o.validationPassages);
+  EXPECT_EQ(now.meanReward, throughPolicyFiles(trainer));
+  EXPECT_EQ(trainer.validationCurve().size(), 1u);  // the curve is left as it was
+  // Run to the end: the curve's last point is the final weights' validation.
+  ASSERT_TRUE(trainer.run(nullptr, {}));
+  ASSERT_EQ(trainer.validationCurve().size(), 2u);
+  EXPECT_EQ(trainer.validationCurve()[1].episode, 64);
+  EXPECT_EQ(trainer.validationCurve()[1].meanReward, throughPolicyFiles(trainer));
+  EXPECT_EQ(trainer.validateCurrentPolicy().meanReward, trainer.validationCurve()[1].meanReward);
 }

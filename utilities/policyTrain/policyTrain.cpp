@@ -106,10 +106,22 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
   };
   const bool done = trainer.run(&stop, events);
   trainer.saveCheckpoint(paths.checkpoint);
+  // final.xml states the validation of its own weights: the curve's last point unless the
+  // run stopped between two validations (Ctrl-C), then one more pass over the passages.
+  double finalValidation = 0;
+  if (options.validationPassages > 0) {
+    const auto& curve = trainer.validationCurve();
+    if (!curve.empty() && curve.back().episode == trainer.episode()) {
+      finalValidation = curve.back().meanReward;
+    } else {
+      const ValidationRecord v = trainer.validateCurrentPolicy();
+      finalValidation = v.meanReward;
+      std::printf("policyTrain: validation of the weights at episode %ld: mean reward %.17g, median %.17g, "
+                  "%d of %d valid\n", v.episode, v.meanReward, v.medianReward, v.valid, v.passages);
+    }
+  }
   writePolicyFiles(paths.finalPolicy, trainer.learner(), environment.stateScaling(),
-                   PolicyProvenance{trainer.episode(),
-                                    trainer.validationCurve().empty() ? 0.0 : trainer.validationCurve().back().meanReward,
-                                    command});
+                   PolicyProvenance{trainer.episode(), finalValidation, command});
   const auto written = writeLearningCurves(paths, trainer, &warnings, baseline);
   progress(trainer, true);
   for (const auto& w : warnings) std::cerr << "policyTrain: warning: " << w << "\n";

@@ -164,6 +164,10 @@ PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file) {
   const Dictionary dict = Dictionary::read(file, "policyTrainDict", keyNames());
   for (const Key& k : keys())
     if (dict.has(k.name)) k.read(dict, options);
+  if (options.validityBarrier > 0 && options.criticModel != "validityAndQuality")
+    throw InputError(file.string(), dict.line("validityBarrier"),
+                     "<validityBarrier> needs <criticModel>validityAndQuality</criticModel>: the '" +
+                         options.criticModel + "' critic has no validity to put a barrier on");
   if (options.minibatch > options.bufferCapacity)
     throw InputError(file.string(), dict.line(dict.has("minibatch") ? "minibatch" : "bufferCapacity"),
                      "<minibatch> " + std::to_string(options.minibatch) + " is larger than <bufferCapacity> " +

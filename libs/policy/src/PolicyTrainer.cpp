@@ -165,16 +165,18 @@ ValidationRecord PolicyTrainer::validateAction(const std::vector<double>& action
   return validationRecord(0, rollouts_.rewards(validationTasks_, actions, options_.validationSeed, 0));
 }
 
-void PolicyTrainer::validate() {
-  if (validationTasks_.empty()) return;
+ValidationRecord PolicyTrainer::validateCurrentPolicy() const {
   // One forward pass per state, as policyMesh makes it: a batched pass rounds differently
   // (about 1e-7 in float), enough to move a passage across a validity edge, and then the
   // logged validation would not be what the saved weights give (docs/policy.md).
   const PolicyBatch states = statesOf(validationTasks_, environment_.stateSize());
   PolicyBatch actions(states.rows(), environment_.actionSize());
   for (Eigen::Index i = 0; i < states.rows(); ++i) actions.row(i) = learner_.act(states.row(i));
-  validation_.push_back(
-      validationRecord(episode_, rollouts_.rewards(validationTasks_, actions, options_.validationSeed, 0)));
+  return validationRecord(episode_, rollouts_.rewards(validationTasks_, actions, options_.validationSeed, 0));
+}
+
+void PolicyTrainer::validate() {
+  if (!validationTasks_.empty()) validation_.push_back(validateCurrentPolicy());
 }
 
 

@@ -73,6 +73,11 @@ class PolicyTrainer {
   // The validation of a fixed action for every passage (the environment's default action:
   // the baseline); nothing of the trainer's state changes.
   ValidationRecord validateAction(const std::vector<double>& action) const;
+  // The validation of the current weights (what policyMesh would give on each passage),
+  // recorded at the current episode; nothing of the trainer's state changes. The curve
+  // holds one every options.validationEvery episodes; this gives it for weights in between
+  // (those of a run stopped with Ctrl-C).
+  ValidationRecord validateCurrentPolicy() const;
   // Best validation mean reward so far (-infinity before the first).
   double bestValidation() const { return bestValidation_; }
   double secondsTrained() const;  // this run's time plus that of the runs before a resume
