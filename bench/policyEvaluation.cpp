@@ -30,6 +30,7 @@
 #include "passageMesh/optimize/Optimizer.hpp"
 #include "passageMesh/policy/Policy.hpp"
 #include "passageMesh/policy/PolicyEnvironment.hpp"
+#include "passageMesh/policy/PolicyTrainOptions.hpp"
 
 using namespace passageMesh;
 
@@ -47,9 +48,7 @@ int main(int argc, char* argv[]) {
     const long budget = argc > 4 ? std::stol(argv[4]) : 0;
     std::optional<Policy> policy;
     if (which != "defaults") policy = Policy::load(which);
-    const std::string edgeRadii = argc > 6 ? argv[6] : "halfLogUniform";
-    if (edgeRadii != "halfLogUniform" && edgeRadii != "uniform")
-      throw InputError("command line: EDGE_RADII is halfLogUniform or uniform, not " + edgeRadii);
+    const EdgeRadiusDraw edgeRadii = edgeRadiusDrawNamed(argc > 6 ? argv[6] : "halfLogUniform");
     std::vector<double> earlierBests;
     if (argc > 7) {
       std::ifstream in(argv[7]);
@@ -70,7 +69,7 @@ int main(int argc, char* argv[]) {
                                          std::to_string(count) + " and a BUDGET above 0");
     }
     const PassageEnvironment environment(
-        edgeRadii == "uniform" ? EdgeRadiusDraw::uniform : EdgeRadiusDraw::halfLogUniform,
+        edgeRadii,
         policy ? policy->stateScaling() : policyStateScaling(BladeParameterRange::readDefault()));
 
     struct Row {

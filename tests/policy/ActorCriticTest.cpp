@@ -115,7 +115,7 @@ TEST(ActorCritic, TheValidityAndQualityCriticLearnsAnOptimumBesideFailures) {
     options.learningRates = {3e-4, 1e-3};
     options.noiseStartSigma = 0.3;  // the shipped policy's exploration
     options.noiseAmplitude = 0.1;
-    options.criticModel = "validityAndQuality";
+    options.criticModel = CriticModel::validityAndQuality;
     options.validityBarrier = barrier;
     options.validationPassages = 0;
     options.threads = 1;

@@ -14,14 +14,14 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   o.learningRates = {3e-4, 1e-3};
   o.noiseAmplitude = 0.125;
   o.seed = 77;
-  o.criticModel = "validityAndQuality";
+  o.criticModel = CriticModel::validityAndQuality;
   o.validityBarrier = 0.125;
   const auto file = testData::writeTempFile("policyTrainDict", "dict.xml", policyTrainDictXml(o));
   const PolicyTrainOptions back = readPolicyTrainDict(file);
   EXPECT_EQ(policyTrainDictXml(back), policyTrainDictXml(o));
   EXPECT_EQ(back.hidden, (std::vector<int>{32, 16}));
   EXPECT_EQ(back.learningRates.actor, 3e-4);
-  EXPECT_EQ(back.criticModel, "validityAndQuality");
+  EXPECT_EQ(back.criticModel, CriticModel::validityAndQuality);
   EXPECT_EQ(back.validityBarrier, 0.125);
   EXPECT_EQ(readPolicyTrainDict(file.parent_path() / "missing.xml").episodes, PolicyTrainOptions{}.episodes);
 }

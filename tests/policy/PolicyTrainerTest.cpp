@@ -51,7 +51,7 @@ TEST(PolicyTrainer, ResumingFromACheckpointGivesTheSameWeightsBitForBit) {
     SCOPED_TRACE("criticModel " + critic);
     const ToyEnvironment toy(24, 8, 3, 0.05);
     PolicyTrainOptions run = smallRun(300);
-    run.criticModel = critic;
+    run.criticModel = criticModelNamed(critic);
     ThreadRollouts rollouts(1);
     PolicyTrainer straight(run, toy, rollouts);
     ASSERT_TRUE(straight.run(nullptr, {}));
@@ -119,7 +119,7 @@ TEST(PolicyTrainer, ACheckpointOfAnotherRunOrACorruptFileIsRefusedWithItsName) {
   changed.hidden = {16, 8};
   EXPECT_NE(resumeError(changed, dir / "good.pt").find("networks are"), std::string::npos);
   changed = smallRun(64);
-  changed.criticModel = "validityAndQuality";
+  changed.criticModel = CriticModel::validityAndQuality;
   const std::string otherCritic = resumeError(changed, dir / "good.pt");
   EXPECT_NE(otherCritic.find("networks are 24 8 [16 16] 0.01 (state"), std::string::npos) << otherCritic;
   EXPECT_NE(otherCritic.find("this run's 24 8 [16 16] 0.01 validityAndQuality"), std::string::npos) << otherCritic;

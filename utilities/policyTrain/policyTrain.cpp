@@ -180,11 +180,7 @@ int main(int argc, char* argv[]) {
       options.threads = cli.values()["threads"].as<int>();
       if (options.threads < 0) throw InputError("command line: -threads: expected 0 (all cores) or more");
     }
-    const bool logRadii = options.edgeRadii == "halfLogUniform";
-    const PassageEnvironment environment(
-        logRadii ? EdgeRadiusDraw::halfLogUniform : EdgeRadiusDraw::uniform,
-        policyStateScaling(BladeParameterRange::readDefault(),
-                           logRadii ? EdgeRadiusScale::logarithmic : EdgeRadiusScale::linear));
+    const PassageEnvironment environment = options.passageEnvironment();
     if (worker) {
       serveRollouts(*mpi, environment, options.threads);
       return 0;

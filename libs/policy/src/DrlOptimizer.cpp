@@ -59,7 +59,7 @@ int runDrl(int dimension, const Eigen::VectorXd& unitStart, const UnitCubeEvalua
   o.noiseStartEpisodes = std::min<long>(o.noiseStartEpisodes, optimizer.budget / 10);
   o.validationPassages = 0;
   o.seed = optimizer.seed;
-  o.actorStart = "defaults";
+  o.actorStart = ActorStart::defaults;
   std::vector<double> start(static_cast<std::size_t>(dimension));
   for (int k = 0; k < dimension; ++k) start[static_cast<std::size_t>(k)] = 2.0 * unitStart[k] - 1.0;
   const FixedStateEnvironment environment(1, start);

@@ -24,11 +24,54 @@ NetworkLayout PolicyTrainOptions::layout(int stateSize, int actionSize) const {
   l.actionSize = actionSize;
   l.hidden = hidden;
   l.leakySlope = leakySlope;
-  if (criticModel != "reward" && criticModel != "validityAndQuality")
-    throw InputError("criticModel is 'reward' or 'validityAndQuality', not '" + criticModel + "'");
-  l.critic = criticModel == "validityAndQuality" ? CriticModel::validityAndQuality : CriticModel::reward;
+  l.critic = criticModel;
   return l;
 }
+
+PassageEnvironment PolicyTrainOptions::passageEnvironment() const {
+  return PassageEnvironment(edgeRadii,
+                            policyStateScaling(BladeParameterRange::readDefault(),
+                                               edgeRadii == EdgeRadiusDraw::halfLogUniform ? EdgeRadiusScale::logarithmic
+                                                                                           : EdgeRadiusScale::linear));
+}
+
+namespace {
+
+// The words of one enumerated setting.
+template <typename E>
+struct Words {
+  const char* setting;
+  std::vector<std::pair<std::string, E>> words;
+
+  E named(const std::string& word) const {
+    for (const auto& [w, value] : words)
+      if (w == word) return value;
+    std::string list;
+    for (std::size_t k = 0; k < words.size(); ++k)
+      list += std::string(k == 0 ? "" : k + 1 == words.size() ? " or " : ", ") + "'" + words[k].first + "'";
+    throw InputError("<" + std::string(setting) + "> is " + list + ", not '" + word + "'");
+  }
+  std::string nameOf(E value) const {
+    for (const auto& [w, v] : words)
+      if (v == value) return w;
+    return "?";
+  }
+};
+
+const Words<ActorStart> actorStartWords{"actorStart", {{"random", ActorStart::random}, {"defaults", ActorStart::defaults}}};
+const Words<EdgeRadiusDraw> edgeRadiusWords{
+    "edgeRadii", {{"halfLogUniform", EdgeRadiusDraw::halfLogUniform}, {"uniform", EdgeRadiusDraw::uniform}}};
+const Words<CriticModel> criticModelWords{
+    "criticModel", {{"reward", CriticModel::reward}, {"validityAndQuality", CriticModel::validityAndQuality}}};
+
+}  // namespace
+
+ActorStart actorStartNamed(const std::string& word) { return actorStartWords.named(word); }
+EdgeRadiusDraw edgeRadiusDrawNamed(const std::string& word) { return edgeRadiusWords.named(word); }
+CriticModel criticModelNamed(const std::string& word) { return criticModelWords.named(word); }
+std::string nameOf(ActorStart value) { return actorStartWords.nameOf(value); }
+std::string nameOf(EdgeRadiusDraw value) { return edgeRadiusWords.nameOf(value); }
+std::string nameOf(CriticModel value) { return criticModelWords.nameOf(value); }
 
 namespace {
 
@@ -67,19 +110,16 @@ std::function<void(const Dictionary&, PolicyTrainOptions&)> readPositive(const c
   };
 }
 
-// A word from a fixed list, e.g. <actorStart> random or defaults.
-std::function<void(const Dictionary&, PolicyTrainOptions&)> readChoice(const char* name,
-                                                                       std::string PolicyTrainOptions::*member,
-                                                                       std::vector<std::string> choices) {
-  return [=](const Dictionary& d, PolicyTrainOptions& o) {
-    const std::string v = d.text(name);
-    if (std::find(choices.begin(), choices.end(), v) == choices.end()) {
-      std::string list;
-      for (std::size_t k = 0; k < choices.size(); ++k)
-        list += std::string(k == 0 ? "" : k + 1 == choices.size() ? " or " : ", ") + "'" + choices[k] + "'";
-      throw InputError(d.source(), d.line(name), "<" + std::string(name) + "> is " + list + ", not '" + v + "'");
+// A word of an enumerated setting, e.g. <actorStart> random or defaults.
+template <typename E>
+std::function<void(const Dictionary&, PolicyTrainOptions&)> readChoice(const Words<E>& words,
+                                                                       E PolicyTrainOptions::*member) {
+  return [&words, member](const Dictionary& d, PolicyTrainOptions& o) {
+    try {
+      o.*member = words.named(d.text(words.setting));
+    } catch (const InputError& e) {
+      throw InputError(d.source(), d.line(words.setting), e.what());
     }
-    o.*member = v;
   };
 }
 
@@ -138,10 +178,9 @@ const std::vector<Key>& keys() {
       {"validationSeed", readInteger("validationSeed", &O::validationSeed, 0), [](const O& o) { return std::to_string(o.validationSeed); }},
       {"checkpointEvery", readInteger("checkpointEvery", &O::checkpointEvery, 1), [](const O& o) { return std::to_string(o.checkpointEvery); }},
       {"logEvery", readInteger("logEvery", &O::logEvery, 1), [](const O& o) { return std::to_string(o.logEvery); }},
-      {"actorStart", readChoice("actorStart", &O::actorStart, {"random", "defaults"}), [](const O& o) { return o.actorStart; }},
-      {"edgeRadii", readChoice("edgeRadii", &O::edgeRadii, {"halfLogUniform", "uniform"}), [](const O& o) { return o.edgeRadii; }},
-      {"criticModel", readChoice("criticModel", &O::criticModel, {"reward", "validityAndQuality"}),
-       [](const O& o) { return o.criticModel; }},
+      {"actorStart", readChoice(actorStartWords, &O::actorStart), [](const O& o) { return nameOf(o.actorStart); }},
+      {"edgeRadii", readChoice(edgeRadiusWords, &O::edgeRadii), [](const O& o) { return nameOf(o.edgeRadii); }},
+      {"criticModel", readChoice(criticModelWords, &O::criticModel), [](const O& o) { return nameOf(o.criticModel); }},
       {"validityBarrier", readPositive("validityBarrier", [](O& o) -> double& { return o.validityBarrier; }, true),
        [](const O& o) { return exact(o.validityBarrier); }},
       {"seed", readInteger("seed", &O::seed, 0), [](const O& o) { return std::to_string(o.seed); }},
@@ -164,10 +203,10 @@ PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file) {
   const Dictionary dict = Dictionary::read(file, "policyTrainDict", keyNames());
   for (const Key& k : keys())
     if (dict.has(k.name)) k.read(dict, options);
-  if (options.validityBarrier > 0 && options.criticModel != "validityAndQuality")
+  if (options.validityBarrier > 0 && options.criticModel != CriticModel::validityAndQuality)
     throw InputError(file.string(), dict.line("validityBarrier"),
                      "<validityBarrier> needs <criticModel>validityAndQuality</criticModel>: the '" +
-                         options.criticModel + "' critic has no validity to put a barrier on");
+                         nameOf(options.criticModel) + "' critic has no validity to put a barrier on");
   if (options.minibatch > options.bufferCapacity)
     throw InputError(file.string(), dict.line(dict.has("minibatch") ? "minibatch" : "bufferCapacity"),
                      "<minibatch> " + std::to_string(options.minibatch) + " is larger than <bufferCapacity> " +

@@ -89,7 +89,7 @@ PolicyTrainer::PolicyTrainer(const PolicyTrainOptions& options, const PolicyEnvi
       rollouts_(rollouts),
       learner_((torch::set_num_threads(1), options.layout(environment.stateSize(), environment.actionSize())),
                options.learningRates, options.seed,
-               options.actorStart == "defaults" ? environment.defaultAction() : std::vector<double>{}),
+               options.actorStart == ActorStart::defaults ? environment.defaultAction() : std::vector<double>{}),
       buffer_(environment.stateSize(), environment.actionSize(), options.bufferCapacity),
       minibatchRandom_(episodeRandom(options.seed, 0, minibatchStream)),
       bestValidation_(-std::numeric_limits<double>::infinity()),

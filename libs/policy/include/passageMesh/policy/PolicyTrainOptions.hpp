@@ -8,10 +8,16 @@
 #include <utility>
 #include <vector>
 
+#include "passageMesh/blade/BladeSampler.hpp"
 #include "passageMesh/policy/ActorCritic.hpp"
 #include "passageMesh/policy/NetworkLayout.hpp"
+#include "passageMesh/policy/PolicyEnvironment.hpp"
 
 namespace passageMesh {
+
+// The actor's first weights: LibTorch's default rule (the paper's), or that rule and then
+// moved so that the actor starts at the environment's default action.
+enum class ActorStart { random, defaults };
 
 struct PolicyTrainOptions {
   long episodes = 100000;         // episodes in the whole run (a resumed run continues to it)
@@ -39,18 +45,17 @@ struct PolicyTrainOptions {
   std::uint64_t validationSeed = 20261202;  // their stream (not the training stream)
   long checkpointEvery = 5000;    // episodes between checkpoints
   long logEvery = 1000;           // episodes between learning-curve rows
-  // The actor's first weights: "random" (LibTorch's default, the paper's) or "defaults"
-  // (random, then moved so that it starts at the environment's default action, for the
-  // passages etc/meshDictDefaults.xml; docs/policy.md measures both).
-  std::string actorStart = "defaults";
-  // The training passages' edge radii: "halfLogUniform" (each radius log-uniform in its
+  // The actor's first weights (for the passages: etc/meshDictDefaults.xml's action;
+  // docs/policy.md measures both).
+  ActorStart actorStart = ActorStart::defaults;
+  // The training passages' edge radii: halfLogUniform (each radius log-uniform in its
   // range with probability 1/2, logarithmic in the state: sharp edges are common and told
-  // apart) or "uniform" (uniform draws, linear in the state: the policies trained before
+  // apart) or uniform (uniform draws, linear in the state: the policies trained before
   // the twelfth session, 2026-12-04). docs/policy.md measures both.
-  std::string edgeRadii = "halfLogUniform";
-  // What the critic predicts: "reward" (the paper's) or "validityAndQuality" (CriticModel,
-  // NetworkLayout.hpp; docs/policy.md measures both).
-  std::string criticModel = "reward";
+  EdgeRadiusDraw edgeRadii = EdgeRadiusDraw::halfLogUniform;
+  // What the critic predicts: reward (the paper's) or validityAndQuality (NetworkLayout.hpp;
+  // docs/policy.md measures both).
+  CriticModel criticModel = CriticModel::reward;
   // With validityAndQuality: 0 makes the actor climb the expected reward; lambda > 0 makes
   // it climb q + lambda log p (ActorCritic::updateActor).
   double validityBarrier = 0;
@@ -60,7 +65,19 @@ struct PolicyTrainOptions {
   // The exploration sigma at a (0-based) episode.
   double noiseSigma(long episode) const;
   NetworkLayout layout(int stateSize, int actionSize) const;
+  // The sampler passages this training draws, scaled as its edgeRadii says.
+  PassageEnvironment passageEnvironment() const;
 };
+
+// The words of the dictionary (and of the benches' command lines) for the enumerated
+// settings, one table each: an unknown word is an InputError listing the known ones, and
+// nameOf gives a value's word.
+ActorStart actorStartNamed(const std::string& word);
+EdgeRadiusDraw edgeRadiusDrawNamed(const std::string& word);
+CriticModel criticModelNamed(const std::string& word);
+std::string nameOf(ActorStart value);
+std::string nameOf(EdgeRadiusDraw value);
+std::string nameOf(CriticModel value);
 
 // A missing file gives the defaults; a missing key keeps its default; an unknown key, a
 // malformed or out-of-range value is an InputError naming the file and the line.
