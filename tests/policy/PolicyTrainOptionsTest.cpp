@@ -63,3 +63,17 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
   EXPECT_NE(bad("<minibatch>200</minibatch><bufferCapacity>100</bufferCapacity>").find("never start"),
             std::string::npos);
 }
+
+TEST(PolicyTrainOptions, EveryEnumeratedSettingReadsBackFromItsWord) {
+  for (const CriticModel v : {CriticModel::reward, CriticModel::validityAndQuality}) EXPECT_EQ(criticModelNamed(nameOf(v)), v);
+  for (const EdgeRadiusDraw v : {EdgeRadiusDraw::uniform, EdgeRadiusDraw::halfLogUniform})
+    EXPECT_EQ(edgeRadiusDrawNamed(nameOf(v)), v);
+  for (const ActorStart v : {ActorStart::random, ActorStart::defaults}) EXPECT_EQ(actorStartNamed(nameOf(v)), v);
+  EXPECT_EQ(nameOf(CriticModel::validityAndQuality), "validityAndQuality");
+  try {
+    edgeRadiusDrawNamed("Uniform");  // words are case-sensitive, as in the dictionary
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "<edgeRadii> is 'halfLogUniform' or 'uniform', not 'Uniform'");
+  }
+}
