@@ -7,7 +7,7 @@
 // slices: along each action axis through the actor's action, POINTS actions spread over
 // +-HALFWIDTH (scaled units, clipped to [-1, 1]), the critic's expected reward and the
 // true reward of each; one row per action to OUT.csv, and per axis the mean gain the axis
-// offers over the actor's action and the critic's error near and far from it.
+// offers over the actor's action (0 for a passage whose actor mesh is invalid) and the critic's error near and far from it.
 // cmaes: CMA-ES (iterOptimize's default, from the defaults, seed 1) with BUDGET meshes per
 // passage; prints the actor's and the search's actions, Q and the critic's belief at both.
 #include <algorithm>
@@ -20,8 +20,8 @@
 #include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/core/InputError.hpp"
 #include "passageMesh/core/ParallelFor.hpp"
-#include "passageMesh/optimize/Optimizer.hpp"
 #include "passageMesh/policy/PolicyTrainer.hpp"
+#include "PassageSearch.hpp"
 
 using namespace passageMesh;
 
@@ -66,7 +66,8 @@ void slices(const ActorCritic& learner, const std::vector<EpisodeTask>& tasks, i
     }
   }
   writeFileAtomically(out, csv);
-  std::printf("mean best gain along one axis over the actor's action (valid actor meshes):");
+  std::printf("mean best gain along one axis over the actor's action (over all passages; one whose actor mesh "
+              "is invalid counts 0):");
   for (int k = 0; k < m; ++k)
     std::printf(" %s %.4f", MeshingParameters::names()[static_cast<std::size_t>(k)].c_str(),
                 gain[static_cast<std::size_t>(k)] / static_cast<double>(tasks.size()));
@@ -84,18 +85,8 @@ void againstCmaes(const ActorCritic& learner, const std::vector<EpisodeTask>& ta
   for (std::size_t i = 0; i < tasks.size(); ++i) {
     const PolicyBatch s = statesOf({tasks[i]}, env.stateSize());
     const PolicyBatch a0 = learner.act(s);
-    BoxProblem box;
-    box.lower = Eigen::VectorXd::Constant(m, -1.0);
-    box.upper = Eigen::VectorXd::Constant(m, 1.0);
-    OptimizerOptions o;
-    o.budget = budget;
-    const std::vector<double> start = env.defaultAction();
-    o.start = Eigen::Map<const Eigen::VectorXd>(start.data(), m);
     const EpisodeTask& task = tasks[i];
-    const PointObjective q = [&task](const Eigen::VectorXd& x) {
-      return task.reward(std::vector<double>(x.data(), x.data() + x.size()));
-    };
-    const OptimizationResult r = optimize(box, evaluateInParallel(q, 0), o);
+    const OptimizationResult r = bench::searchPassage(task, env.defaultAction(), budget);
     PolicyBatch best(1, m);
     for (int k = 0; k < m; ++k) best(0, k) = r.best[k];
     std::printf("passage %zu: Q actor %.4f, CMA-ES %.4f; critic at the actor's action %.4f, at CMA-ES's %.4f; "

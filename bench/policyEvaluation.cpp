@@ -27,10 +27,10 @@
 #include "passageMesh/core/GnuplotRun.hpp"
 #include "passageMesh/core/InputError.hpp"
 #include "passageMesh/core/ParallelFor.hpp"
-#include "passageMesh/optimize/Optimizer.hpp"
 #include "passageMesh/policy/Policy.hpp"
 #include "passageMesh/policy/PolicyEnvironment.hpp"
 #include "passageMesh/policy/PolicyTrainOptions.hpp"
+#include "PassageSearch.hpp"
 
 using namespace passageMesh;
 
@@ -96,18 +96,8 @@ int main(int argc, char* argv[]) {
       if (!earlierBests.empty()) {
         row.best = std::max(row.oneShot, earlierBests[static_cast<std::size_t>(i)]);
       } else if (budget > 0) {
-        BoxProblem box;
-        box.lower = Eigen::VectorXd::Constant(policyActionSize, -1.0);
-        box.upper = Eigen::VectorXd::Constant(policyActionSize, 1.0);
-        OptimizerOptions options;
-        options.budget = budget;
-        options.seed = 1;
-        const std::vector<double> start = environment.defaultAction();
-        options.start = Eigen::Map<const Eigen::VectorXd>(start.data(), policyActionSize);
-        const PointObjective q = [&task](const Eigen::VectorXd& x) {
-          return task.reward(std::vector<double>(x.data(), x.data() + x.size()));
-        };
-        row.best = std::max(row.oneShot, optimize(box, evaluateInParallel(q, 0), options).bestValue);
+        row.best = std::max(row.oneShot,
+                            bench::searchPassage(task, environment.defaultAction(), budget).bestValue);
       }
       std::fprintf(stderr, "passage %d: one-shot Q %.6f%s\n", i, row.oneShot,
                    budget > 0 ? (", best " + std::to_string(row.best)).c_str() : "");
