@@ -129,3 +129,21 @@ TEST(ActorCritic, TheValidityAndQualityCriticLearnsAnOptimumBesideFailures) {
     EXPECT_GT(std::count(rewards.begin(), rewards.end(), -1.0), 50) << "exploration met too few failures";
   }
 }
+
+// The imitation term pulls the actor to demonstrated actions: with it alone dominant, pi(s)
+// reaches the demonstrations; with weight 0 it has no effect.
+TEST(ActorCritic, ImitationPullsTheActorToTheDemonstratedActions) {
+  NetworkLayout layout{3, 2, {16, 16}, 0.01};
+  PolicyBatch s(4, 3), target(4, 2);
+  s << -0.5, 0.2, 0.9, 0.1, -0.8, 0.3, 0.7, 0.7, -0.2, 0.0, 0.5, -0.6;
+  target << 0.6, -0.4, -0.7, 0.2, 0.3, 0.8, -0.1, -0.9;
+  ActorCritic pulled(layout, {1e-2, 1e-3}, 3), untouched(layout, {1e-2, 1e-3}, 3);
+  const PolicyBatch before = pulled.act(s);
+  for (int step = 0; step < 400; ++step) {
+    pulled.updateActor(s, 0, 0, Imitation{s, target, 10.0});
+    untouched.updateActor(s, 0, 0, Imitation{s, target, 0.0});
+  }
+  EXPECT_GT((before - target).cwiseAbs().maxCoeff(), 0.3);
+  EXPECT_LT((pulled.act(s) - target).cwiseAbs().maxCoeff(), 0.05);
+  EXPECT_GT((untouched.act(s) - target).cwiseAbs().maxCoeff(), 0.3);
+}

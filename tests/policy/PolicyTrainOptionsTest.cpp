@@ -16,6 +16,9 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   o.seed = 77;
   o.criticModel = CriticModel::validityAndQuality;
   o.validityBarrier = 0.125;
+  o.searchEvery = 640;
+  o.searchBudget = 96;
+  o.imitationWeight = 0.25;
   const auto file = testData::writeTempFile("policyTrainDict", "dict.xml", policyTrainDictXml(o));
   const PolicyTrainOptions back = readPolicyTrainDict(file);
   EXPECT_EQ(policyTrainDictXml(back), policyTrainDictXml(o));
@@ -23,6 +26,9 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   EXPECT_EQ(back.learningRates.actor, 3e-4);
   EXPECT_EQ(back.criticModel, CriticModel::validityAndQuality);
   EXPECT_EQ(back.validityBarrier, 0.125);
+  EXPECT_EQ(back.searchEvery, 640);
+  EXPECT_EQ(back.searchBudget, 96);
+  EXPECT_EQ(back.imitationWeight, 0.25);
   EXPECT_EQ(readPolicyTrainDict(file.parent_path() / "missing.xml").episodes, PolicyTrainOptions{}.episodes);
 }
 
@@ -58,6 +64,10 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
             std::string::npos);
   EXPECT_NE(bad("<validityBarrier>0.1</validityBarrier>").find("needs <criticModel>"), std::string::npos);
   EXPECT_EQ(bad("<validityBarrier>0</validityBarrier>"), "accepted");
+  EXPECT_NE(bad("<imitationWeight>1</imitationWeight>").find("bad.xml:2: <imitationWeight> needs <searchEvery> above 0"),
+            std::string::npos) << bad("<imitationWeight>1</imitationWeight>");
+  EXPECT_EQ(bad("<searchEvery>64</searchEvery>\n<imitationWeight>1</imitationWeight>"), "accepted");
+  EXPECT_NE(bad("<searchBudget>1</searchBudget>").find("must be in [2,"), std::string::npos);
   EXPECT_NE(bad("<epsiodes>10</epsiodes>").find("epsiodes"), std::string::npos);
   EXPECT_NE(bad("<batchEpisodes>3000000000</batchEpisodes>").find("must be in [1, 2147483647]"), std::string::npos);
   EXPECT_NE(bad("<minibatch>200</minibatch><bufferCapacity>100</bufferCapacity>").find("never start"),

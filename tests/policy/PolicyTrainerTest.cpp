@@ -45,13 +45,20 @@ std::pair<PolicyBatch, Eigen::VectorXd> fingerprint(const ActorCritic& learner, 
 
 }  // namespace
 
-// Both critic models, on a toy with failures (-1) so that the validity network learns too.
+// Both critic models, on a toy with failures (-1) so that the validity network learns too;
+// and with searches and imitation (their demonstrations and counters are in the checkpoint).
 TEST(PolicyTrainer, ResumingFromACheckpointGivesTheSameWeightsBitForBit) {
-  for (const std::string critic : {"reward", "validityAndQuality"}) {
+  for (const std::string critic : {"reward", "validityAndQuality", "searches"}) {
     SCOPED_TRACE("criticModel " + critic);
     const ToyEnvironment toy(24, 8, 3, 0.05);
     PolicyTrainOptions run = smallRun(300);
-    run.criticModel = criticModelNamed(critic);
+    if (critic == "searches") {
+      run.searchEvery = 48;  // not a multiple of the batch: one search follows episode 48's batch
+      run.searchBudget = 12;
+      run.imitationWeight = 1;
+    } else {
+      run.criticModel = criticModelNamed(critic);
+    }
     ThreadRollouts rollouts(1);
     PolicyTrainer straight(run, toy, rollouts);
     ASSERT_TRUE(straight.run(nullptr, {}));
@@ -80,6 +87,9 @@ TEST(PolicyTrainer, ResumingFromACheckpointGivesTheSameWeightsBitForBit) {
     ASSERT_EQ(resumed.validationCurve().size(), 3u);
     EXPECT_EQ(resumed.validationCurve().back().meanReward, straight.validationCurve().back().meanReward);
     EXPECT_EQ(resumed.bestValidation(), straight.bestValidation());
+    EXPECT_EQ(resumed.searchSummary().searches, straight.searchSummary().searches);
+    EXPECT_EQ(resumed.searchSummary().meanGain, straight.searchSummary().meanGain);
+    EXPECT_EQ(resumed.demonstrations().size(), straight.demonstrations().size());
     if (critic == "validityAndQuality") {
       const std::vector<double> rewards = straight.buffer().recentRewards(300);
       EXPECT_GT(std::count(rewards.begin(), rewards.end(), -1.0), 10) << "the toy gave too few failures";
@@ -206,4 +216,62 @@ TEST(PolicyTrainer, TheValidationScoresTheActionsOfOneStateForwardPasses) {
   EXPECT_EQ(trainer.validationCurve()[1].episode, 64);
   EXPECT_EQ(trainer.validationCurve()[1].meanReward, throughPolicyFiles(trainer));
   EXPECT_EQ(trainer.validateCurrentPolicy().meanReward, trainer.validationCurve()[1].meanReward);
+}
+
+// A search: CMA-ES from the actor's action on a passage of its own stream; all its meshes
+// enter the replay buffer (not the learning curve's episodes), its best becomes a
+// demonstration no worse than the actor's own action.
+TEST(PolicyTrainer, SearchesFeedTheBufferAndLeaveDemonstrationsAtLeastAsGoodAsTheActor) {
+  const ToyEnvironment toy(24, 8, 3);
+  ThreadRollouts rollouts(2);
+  PolicyTrainOptions o = smallRun(96);
+  o.searchEvery = 32;
+  o.searchBudget = 20;
+  PolicyTrainer trainer(o, toy, rollouts);
+  ASSERT_TRUE(trainer.run(nullptr, {}));
+  EXPECT_EQ(trainer.searchSummary().searches, 3);
+  EXPECT_EQ(trainer.buffer().size(), 96 + 3 * 20);
+  EXPECT_EQ(trainer.demonstrations().size(), 3);  // the toy has no invalid actions here
+  EXPECT_GE(trainer.searchSummary().meanGain, 0.0);
+  EXPECT_EQ(trainer.recentRewards(1000).size(), 96u);
+  // Each demonstration is a point the toy scores as recorded, on some search passage.
+  PolicyBatch s, a;
+  Eigen::VectorXd q;
+  trainer.demonstrations().exportEpisodes(s, a, q);
+  for (Eigen::Index i = 0; i < q.size(); ++i) {
+    EXPECT_GT(q(i), -1.0);
+    EXPECT_LE(a.row(i).cwiseAbs().maxCoeff(), 1.0);
+  }
+  // Without searches the same run has no demonstrations and a buffer of episodes only.
+  o.searchEvery = 0;
+  PolicyTrainer plain(o, toy, rollouts);
+  ASSERT_TRUE(plain.run(nullptr, {}));
+  EXPECT_EQ(plain.buffer().size(), 96);
+  EXPECT_EQ(plain.demonstrations().size(), 0);
+}
+
+// -startFrom: another run's checkpoint (other seed, other settings) carries on under this
+// run's settings; a plain resume of the same file is refused.
+TEST(PolicyTrainer, StartingFromAnotherRunsCheckpointKeepsItsWeightsAndEpisodes) {
+  const ToyEnvironment toy(24, 8, 3);
+  ThreadRollouts rollouts(1);
+  const auto file = testData::tempFolder("policyTrainerStartFrom") / "base.pt";
+  PolicyTrainer base(smallRun(64), toy, rollouts);
+  ASSERT_TRUE(base.run(nullptr, {}));
+  base.saveCheckpoint(file);
+
+  PolicyTrainOptions next = smallRun(128);
+  next.seed = 5;
+  next.searchEvery = 32;
+  next.searchBudget = 10;
+  next.imitationWeight = 0.5;
+  EXPECT_NE(resumeError(next, file).find("seed 11"), std::string::npos);
+  PolicyTrainer continued(next, toy, rollouts);
+  continued.resume(file, false);
+  EXPECT_EQ(continued.episode(), 64);
+  EXPECT_EQ(fingerprint(continued.learner(), 24, 8), fingerprint(base.learner(), 24, 8));
+  EXPECT_EQ(continued.recentRewards(1000), base.recentRewards(1000));
+  ASSERT_TRUE(continued.run(nullptr, {}));
+  EXPECT_EQ(continued.episode(), 128);
+  EXPECT_EQ(continued.searchSummary().searches, 2);  // after episodes 96 and 128
 }

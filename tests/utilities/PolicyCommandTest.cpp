@@ -16,14 +16,14 @@ const std::string policyTrain = POLICYTRAIN_EXECUTABLE;
 const std::string policyMesh = POLICYMESH_EXECUTABLE;
 
 // A short training on small networks: checkpoints every 32 episodes.
-fs::path trainingCase(const std::string& name, long episodes) {
+fs::path trainingCase(const std::string& name, long episodes, const std::string& extraKeys = "") {
   const fs::path dir = freshCase(name);
   writeText(dir / "system" / "policyTrainDict.xml",
             "<policyTrainDict>\n  <episodes>" + std::to_string(episodes) +
                 "</episodes>\n  <batchEpisodes>16</batchEpisodes>\n  <minibatch>20</minibatch>\n"
                 "  <hiddenLayers>32 32</hiddenLayers>\n  <validationEvery>64</validationEvery>\n"
                 "  <validationPassages>6</validationPassages>\n  <checkpointEvery>32</checkpointEvery>\n"
-                "  <logEvery>16</logEvery>\n  <threads>2</threads>\n</policyTrainDict>\n");
+                "  <logEvery>16</logEvery>\n  <threads>2</threads>\n" + extraKeys + "</policyTrainDict>\n");
   return dir;
 }
 
@@ -75,15 +75,35 @@ TEST(PolicyTrainCommand, WritesPolicyCheckpointAndCurvesAndResumesBitForBitAfter
   EXPECT_EQ(readText(killed / "postProcessing/policyTrain/validation.csv"), validation);
 }
 
+TEST(PolicyTrainCommand, StartFromContinuesAnotherRunWithThisCasesSettings) {
+  const fs::path base = trainingCase("policyTrainBase", 32);
+  ASSERT_EQ(runTool(policyTrain, base).exitCode, 0);
+  const fs::path next = trainingCase("policyTrainNext", 64, "  <searchEvery>16</searchEvery>\n  <searchBudget>8</searchBudget>\n");
+  const std::string from = "-startFrom '" + (base / "policy" / "checkpoint.pt").string() + "'";
+  const RunResult both = runTool(policyTrain, next, from + " -resume");
+  EXPECT_EQ(both.exitCode, 1);
+  EXPECT_NE(both.err.find("give one"), std::string::npos) << both.err;
+  const RunResult r = runTool(policyTrain, next, from);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("started at episode 32"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("2 searches"), std::string::npos) << r.err;
+  const RunResult missing = runTool(policyTrain, trainingCase("policyTrainNoBase", 64), "-startFrom nowhere.pt");
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("nowhere.pt"), std::string::npos) << missing.err;
+}
+
 TEST(PolicyTrainCommand, TwoMpiRanksGiveTheWeightsOfTwoThreads) {
   if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "no mpirun";
   // Open MPI refuses root without these (CI runs as root) and two ranks on few cores.
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
   setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 1);
-  const fs::path threads = trainingCase("policyTrainThreads", 64);
+  // With searches: their batches (every row the same passage) go over the ranks too.
+  const std::string searches = "  <searchEvery>32</searchEvery>\n  <searchBudget>12</searchBudget>\n"
+                               "  <imitationWeight>1</imitationWeight>\n";
+  const fs::path threads = trainingCase("policyTrainThreads", 64, searches);
   ASSERT_EQ(runTool(policyTrain, threads).exitCode, 0);
-  const fs::path ranks = trainingCase("policyTrainRanks", 64);
+  const fs::path ranks = trainingCase("policyTrainRanks", 64, searches);
   const RunResult r = runCommand("mpirun", "-np 2 '" + policyTrain + "' -case '" + ranks.string() +
                                                "' -parallel -threads 1", ranks);
   ASSERT_EQ(r.exitCode, 0) << r.err;

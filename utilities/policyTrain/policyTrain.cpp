@@ -7,7 +7,9 @@
 //          policy/final.xml + final.pt (the last weights),
 //          policy/checkpoint.pt, postProcessing/policyTrain/{learning,validation}.csv,
 //          learning.png
-// -resume continues from policy/checkpoint.pt; -parallel under mpirun spreads the
+// -resume continues from policy/checkpoint.pt; -startFrom FILE continues another run (its
+// checkpoint) under this case's settings, e.g. to add searches to a trained policy;
+// -parallel under mpirun spreads the
 // rollouts over the ranks. Exit codes: 0 done, 1 bad input, 130 interrupted by Ctrl-C
 // (a checkpoint was written: run again with -resume).
 #include <cmath>
@@ -51,11 +53,19 @@ class TrainingProgress {
     const long done = t.episode() - first_;
     const double rate = s > 0 ? done / s : 0.0;
     const double left = rate > 0 ? (t.options().episodes - t.episode()) / rate : 0.0;
-    const RewardSummary recent = summarizeRewards(t.buffer().recentRewards(1000));
+    const RewardSummary recent = summarizeRewards(t.recentRewards(1000));
     const double n = std::max(1, recent.count);
+    std::string searches;
+    if (t.options().searchEvery > 0) {
+      const PolicyTrainer::SearchSummary summary = t.searchSummary();
+      searches = ", " + std::to_string(summary.searches) + " searches (mean gain " +
+                 std::to_string(summary.meanGain) + ", " + std::to_string(t.demonstrations().size()) +
+                 " demonstrations)";
+    }
     std::fprintf(stderr, "policyTrain: %ld/%ld episodes, %.1f per s, mean reward of the last %d %.5f "
-                 "(valid %.1f %%), best validation %s, %s left\n",
+                 "(valid %.1f %%)%s, best validation %s, %s left\n",
                  t.episode(), t.options().episodes, rate, recent.count, recent.mean, 100.0 * recent.valid / n,
+                 searches.c_str(),
                  std::isfinite(t.bestValidation()) ? std::to_string(t.bestValidation()).c_str() : "none yet",
                  formatDuration(left).c_str());
   }
@@ -72,12 +82,20 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
   const PolicyTrainPaths paths(cli.caseDir());
   const std::atomic<bool>& stop = installInterruptFlag();  // before anything slow
   PolicyTrainer trainer(options, environment, rollouts);
-  if (cli.values().count("resume")) {
+  const bool resume = cli.values().count("resume") > 0;
+  if (resume && cli.values().count("startFrom"))
+    throw InputError("command line: -resume and -startFrom: give one (-resume continues this case's run)");
+  if (resume) {
     trainer.resume(paths.checkpoint);
     std::printf("policyTrain: resumed at episode %ld from %s\n", trainer.episode(), paths.checkpoint.c_str());
   } else if (std::filesystem::exists(paths.checkpoint)) {
     throw InputError(paths.checkpoint.string(), 0,
                      "a checkpoint of an earlier run exists: continue it with -resume, or delete it");
+  } else if (cli.values().count("startFrom")) {
+    const std::filesystem::path from = cli.values()["startFrom"].as<std::string>();
+    trainer.resume(from, false);
+    std::printf("policyTrain: started at episode %ld from %s, with this case's settings\n", trainer.episode(),
+                from.c_str());
   }
   std::printf("policyTrain: %ld episodes in batches of %d, networks %s, seed %llu, %s\n", options.episodes,
               options.batchEpisodes, NetworkLayout{0, 0, options.hidden, options.leakySlope}.hiddenText().c_str(),
@@ -167,6 +185,9 @@ int main(int argc, char* argv[]) {
                     "batch under way and writes a checkpoint (exit code 130); -resume continues.");
     cli.addOptions()
         ("resume", "continue from policy/checkpoint.pt")
+        ("startFrom", po::value<std::string>(),
+         "start from another run's checkpoint FILE (its weights, optimisers, replay buffer, curves and "
+         "episode count; the same networks) and go on with this case's settings")
         ("parallel", "spread the rollouts over MPI ranks (run under mpirun)")
         ("episodes", po::value<long>(), "override <episodes> of the dictionary")
         ("threads", po::value<int>(), "override <threads> of the dictionary (0 = all cores)");

@@ -102,7 +102,8 @@ double ActorCritic::updateCritic(const PolicyBatch& states, const PolicyBatch& a
   return torch::mse_loss(expected, target).item<double>();
 }
 
-double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty, double validityBarrier) {
+double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty, double validityBarrier,
+                                const Imitation& imitation) {
   Networks& n = *networks_;
   const torch::Tensor s = tensorOf(states);
   n.actorOptimizer.zero_grad();
@@ -121,6 +122,11 @@ double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty, 
   if (boundPenalty > 0) {
     const double edge = std::atanh(0.95);
     loss = loss + boundPenalty * torch::relu(u.abs() - edge).pow(2).mean();
+  }
+  if (imitation.weight > 0 && imitation.states.rows() > 0) {
+    const torch::Tensor distance =
+        (n.actor->forward(tensorOf(imitation.states)) - tensorOf(imitation.actions)).pow(2).sum(1);
+    loss = loss + imitation.weight * distance.mean();
   }
   loss.backward();
   n.actorOptimizer.step();

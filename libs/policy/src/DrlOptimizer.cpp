@@ -32,8 +32,8 @@ struct BudgetEnded {};
 class FixedStateRollouts final : public RolloutEvaluator {
  public:
   explicit FixedStateRollouts(const UnitCubeEvaluator& evaluate) : evaluate_(evaluate) {}
-  std::vector<double> rewards(const std::vector<EpisodeTask>&, const PolicyBatch& actions, std::uint64_t,
-                              std::uint64_t) override {
+  std::vector<double> rewards(const std::vector<EpisodeTask>&, const PolicyBatch& actions,
+                              const EpisodeRange&) override {
     std::vector<Eigen::VectorXd> points;
     for (long i = 0; i < actions.rows(); ++i)
       points.push_back(((actions.row(i).transpose().array() + 1.0) * 0.5).matrix());

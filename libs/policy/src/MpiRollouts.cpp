@@ -11,11 +11,12 @@ namespace passageMesh {
 
 namespace {
 
-// The header rank 0 broadcasts before each batch: command, seed, first episode, count.
+// The header rank 0 broadcasts before each batch: command, seed, first episode, count, step
+// (EpisodeRange).
 enum Command : std::uint64_t { stopCommand = 0, evaluateCommand = 1 };
-using Header = std::array<std::uint64_t, 4>;
+using Header = std::array<std::uint64_t, 5>;
 
-void broadcastHeader(Header& h) { MPI_Bcast(h.data(), 4, MPI_UINT64_T, 0, MPI_COMM_WORLD); }
+void broadcastHeader(Header& h) { MPI_Bcast(h.data(), 5, MPI_UINT64_T, 0, MPI_COMM_WORLD); }
 
 // Every rank's part of one batch; the sum over ranks lands on rank 0.
 std::vector<double> evaluateBatch(const MpiSession& session, const PolicyEnvironment& environment,
@@ -26,8 +27,9 @@ std::vector<double> evaluateBatch(const MpiSession& session, const PolicyEnviron
   MPI_Bcast(actions.data(), static_cast<int>(actions.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
   if (tasks.empty()) {
     tasks.resize(static_cast<std::size_t>(count));
+    const EpisodeRange range{h[1], h[2], h[4]};
     for (int i = session.rank(); i < count; i += session.size())
-      tasks[static_cast<std::size_t>(i)] = environment.draw(h[1], h[2] + static_cast<std::uint64_t>(i));
+      tasks[static_cast<std::size_t>(i)] = environment.draw(range.seed, range.episode(static_cast<std::size_t>(i)));
   }
   std::vector<double> mine, all(static_cast<std::size_t>(count), 0.0);
   try {
@@ -58,13 +60,13 @@ MpiRollouts::MpiRollouts(const MpiSession& session, const PolicyEnvironment& env
     : session_(session), environment_(environment), threads_(threads) {}
 
 MpiRollouts::~MpiRollouts() {
-  Header h{stopCommand, 0, 0, 0};
+  Header h{stopCommand, 0, 0, 0, 0};
   broadcastHeader(h);
 }
 
 std::vector<double> MpiRollouts::rewards(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
-                                         std::uint64_t seed, std::uint64_t first) {
-  Header h{evaluateCommand, seed, first, tasks.size()};
+                                         const EpisodeRange& range) {
+  Header h{evaluateCommand, range.seed, range.first, tasks.size(), range.step};
   broadcastHeader(h);
   PolicyBatch copy = actions;
   return evaluateBatch(session_, environment_, threads_, h, tasks, copy);

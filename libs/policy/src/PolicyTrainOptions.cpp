@@ -183,6 +183,10 @@ const std::vector<Key>& keys() {
       {"criticModel", readChoice(criticModelWords, &O::criticModel), [](const O& o) { return nameOf(o.criticModel); }},
       {"validityBarrier", readPositive("validityBarrier", [](O& o) -> double& { return o.validityBarrier; }, true),
        [](const O& o) { return exact(o.validityBarrier); }},
+      {"searchEvery", readInteger("searchEvery", &O::searchEvery, 0), [](const O& o) { return std::to_string(o.searchEvery); }},
+      {"searchBudget", readInteger("searchBudget", &O::searchBudget, 2), [](const O& o) { return std::to_string(o.searchBudget); }},
+      {"imitationWeight", readPositive("imitationWeight", [](O& o) -> double& { return o.imitationWeight; }, true),
+       [](const O& o) { return exact(o.imitationWeight); }},
       {"seed", readInteger("seed", &O::seed, 0), [](const O& o) { return std::to_string(o.seed); }},
       {"threads", readInteger("threads", &O::threads, 0), [](const O& o) { return std::to_string(o.threads); }},
   };
@@ -207,6 +211,10 @@ PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file) {
     throw InputError(file.string(), dict.line("validityBarrier"),
                      "<validityBarrier> needs <criticModel>validityAndQuality</criticModel>: the '" +
                          nameOf(options.criticModel) + "' critic has no validity to put a barrier on");
+  if (options.imitationWeight > 0 && options.searchEvery == 0)
+    throw InputError(file.string(), dict.line("imitationWeight"),
+                     "<imitationWeight> needs <searchEvery> above 0: without searches there are no "
+                     "demonstrations to imitate");
   if (options.minibatch > options.bufferCapacity)
     throw InputError(file.string(), dict.line(dict.has("minibatch") ? "minibatch" : "bufferCapacity"),
                      "<minibatch> " + std::to_string(options.minibatch) + " is larger than <bufferCapacity> " +

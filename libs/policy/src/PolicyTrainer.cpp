@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/optimize/Optimizer.hpp"
+#include "passageMesh/quality/MeshQuality.hpp"
 #include "TorchTensors.hpp"
 
 namespace passageMesh {
@@ -16,6 +18,14 @@ namespace {
 constexpr const char* checkpointFormat = "passageMesh policyTrain checkpoint 1";
 constexpr std::uint32_t noiseStream = 1;
 constexpr std::uint32_t minibatchStream = 2;
+constexpr std::uint32_t searchStream = 3;
+
+// The searches' passages come from a stream of their own: seed XOR a constant, so they are
+// not the training episodes' passages.
+constexpr std::uint64_t searchPassageSeed(std::uint64_t seed) { return seed ^ 0x5ea4c4ed5ea4c4edULL; }
+
+// The training episodes' rewards kept for the learning curve and the progress line.
+long recentCapacity(const PolicyTrainOptions& o) { return std::max(o.logEvery, 1000L); }
 
 std::string layoutText(const NetworkLayout& l) {
   std::ostringstream s;
@@ -91,6 +101,7 @@ PolicyTrainer::PolicyTrainer(const PolicyTrainOptions& options, const PolicyEnvi
                options.learningRates, options.seed,
                options.actorStart == ActorStart::defaults ? environment.defaultAction() : std::vector<double>{}),
       buffer_(environment.stateSize(), environment.actionSize(), options.bufferCapacity),
+      demonstrations_(environment.stateSize(), environment.actionSize(), options.bufferCapacity),
       minibatchRandom_(episodeRandom(options.seed, 0, minibatchStream)),
       bestValidation_(-std::numeric_limits<double>::infinity()),
       start_(std::chrono::steady_clock::now()) {
@@ -106,6 +117,8 @@ double PolicyTrainer::secondsTrained() const {
 void PolicyTrainer::learnFrom(const std::vector<double>& state, const std::vector<double>& action,
                               double reward) {
   buffer_.add(state, action, reward);
+  recentRewards_.push_back(reward);
+  if (static_cast<long>(recentRewards_.size()) > recentCapacity(options_)) recentRewards_.erase(recentRewards_.begin());
   ++episode_;
   if (buffer_.size() >= options_.minibatch) {
     PolicyBatch s, a;
@@ -117,11 +130,11 @@ void PolicyTrainer::learnFrom(const std::vector<double>& state, const std::vecto
     }
     if (episode_ % options_.actorUpdateEvery == 0) {
       buffer_.sample(options_.minibatch, minibatchRandom_, s, a, r);
-      learner_.updateActor(s, options_.actionBoundPenalty, options_.validityBarrier);
+      learner_.updateActor(s, options_.actionBoundPenalty, options_.validityBarrier, imitationBatch());
     }
   }
   if (episode_ % options_.logEvery == 0) {
-    const RewardSummary recent = summarizeRewards(buffer_.recentRewards(options_.logEvery));
+    const RewardSummary recent = summarizeRewards(recentRewards(options_.logEvery));
     LearningRecord record;
     record.episode = episode_;
     record.meanReward = recent.mean;
@@ -133,6 +146,69 @@ void PolicyTrainer::learnFrom(const std::vector<double>& state, const std::vecto
     lossSum_ = 0;
     lossCount_ = 0;
   }
+}
+
+std::vector<double> PolicyTrainer::recentRewards(long count) const {
+  const long n = std::min<long>(count, static_cast<long>(recentRewards_.size()));
+  return std::vector<double>(recentRewards_.rbegin(), recentRewards_.rbegin() + n);
+}
+
+Imitation PolicyTrainer::imitationBatch() {
+  Imitation imitation;
+  if (options_.imitationWeight <= 0 || demonstrations_.size() == 0) return imitation;
+  PolicyBatch s, a;
+  Eigen::VectorXd q;
+  demonstrations_.sample(std::min<long>(options_.minibatch, demonstrations_.size()), minibatchRandom_, s, a, q);
+  // Only where the demonstration beats what the critic expects of the actor's own action
+  // (the Q filter of Nair et al., ICRA 2018): a demonstration the actor has overtaken, or
+  // one from an older, worse actor, pulls no more.
+  const Eigen::VectorXd own = learner_.value(s, learner_.act(s));
+  std::vector<Eigen::Index> keep;
+  for (Eigen::Index i = 0; i < s.rows(); ++i)
+    if (q(i) > own(i)) keep.push_back(i);
+  imitation.states.resize(static_cast<Eigen::Index>(keep.size()), s.cols());
+  imitation.actions.resize(static_cast<Eigen::Index>(keep.size()), a.cols());
+  for (std::size_t k = 0; k < keep.size(); ++k) {
+    imitation.states.row(static_cast<Eigen::Index>(k)) = s.row(keep[k]);
+    imitation.actions.row(static_cast<Eigen::Index>(k)) = a.row(keep[k]);
+  }
+  imitation.weight = options_.imitationWeight;
+  return imitation;
+}
+
+void PolicyTrainer::search(std::uint64_t index) {
+  const EpisodeRange range{searchPassageSeed(options_.seed), index, 0};
+  const EpisodeTask task = environment_.draw(range.seed, index);
+  const int m = environment_.actionSize();
+  const PolicyBatch start = learner_.act(statesOf({task}, environment_.stateSize()));
+  BoxProblem box;
+  box.lower = Eigen::VectorXd::Constant(m, -1.0);
+  box.upper = Eigen::VectorXd::Constant(m, 1.0);
+  OptimizerOptions o;
+  o.budget = options_.searchBudget;
+  o.seed = episodeRandom(options_.seed, index, searchStream)();
+  o.start = start.row(0).transpose();
+  o.patternSearchShare = 0;  // one mesh at a time would leave the other cores idle
+  double startQ = invalidMeshQuality;
+  bool first = true;
+  const BatchObjective objective = [&](const std::vector<Eigen::VectorXd>& points) {
+    PolicyBatch actions(static_cast<Eigen::Index>(points.size()), m);
+    for (std::size_t i = 0; i < points.size(); ++i) actions.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
+    const std::vector<double> q = rollouts_.rewards(std::vector<EpisodeTask>(points.size(), task), actions, range);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      buffer_.add(task.state, std::vector<double>(points[i].data(), points[i].data() + m), q[i]);
+    if (first) startQ = q.front();  // CMA-ES evaluates its start alone first
+    first = false;
+    return q;
+  };
+  const OptimizationResult result = optimize(box, objective, o);
+  ++searches_;
+  if (startQ > invalidMeshQuality) {
+    ++gainSearches_;
+    searchGainSum_ += result.bestValue - startQ;
+  }
+  if (result.bestValue > invalidMeshQuality)
+    demonstrations_.add(task.state, std::vector<double>(result.best.data(), result.best.data() + m), result.bestValue);
 }
 
 void PolicyTrainer::runBatch() {
@@ -149,7 +225,7 @@ void PolicyTrainer::runBatch() {
       actions(i, k) = std::clamp(actions(i, k) + sigma * standardNormal(noise), -1.0, 1.0);
   }
   const std::vector<double> rewards =
-      rollouts_.rewards(tasks, actions, options_.seed, static_cast<std::uint64_t>(first));
+      rollouts_.rewards(tasks, actions, {options_.seed, static_cast<std::uint64_t>(first)});
   for (int i = 0; i < count; ++i) {
     const auto a = actions.row(i);
     learnFrom(tasks[static_cast<std::size_t>(i)].state, std::vector<double>(a.data(), a.data() + a.size()),
@@ -162,7 +238,7 @@ ValidationRecord PolicyTrainer::validateAction(const std::vector<double>& action
   PolicyBatch actions(n, environment_.actionSize());
   for (int i = 0; i < n; ++i)
     actions.row(i) = Eigen::Map<const Eigen::RowVectorXd>(action.data(), environment_.actionSize());
-  return validationRecord(0, rollouts_.rewards(validationTasks_, actions, options_.validationSeed, 0));
+  return validationRecord(0, rollouts_.rewards(validationTasks_, actions, {options_.validationSeed, 0}));
 }
 
 ValidationRecord PolicyTrainer::validateCurrentPolicy() const {
@@ -172,7 +248,7 @@ ValidationRecord PolicyTrainer::validateCurrentPolicy() const {
   const PolicyBatch states = statesOf(validationTasks_, environment_.stateSize());
   PolicyBatch actions(states.rows(), environment_.actionSize());
   for (Eigen::Index i = 0; i < states.rows(); ++i) actions.row(i) = learner_.act(states.row(i));
-  return validationRecord(episode_, rollouts_.rewards(validationTasks_, actions, options_.validationSeed, 0));
+  return validationRecord(episode_, rollouts_.rewards(validationTasks_, actions, {options_.validationSeed, 0}));
 }
 
 void PolicyTrainer::validate() {
@@ -186,6 +262,9 @@ bool PolicyTrainer::run(const std::atomic<bool>* stop, const Events& events) {
     if (stop && stop->load()) return false;
     const long before = episode_;
     runBatch();
+    if (options_.searchEvery > 0)
+      for (long k = before / options_.searchEvery + 1; k <= episode_ / options_.searchEvery; ++k)
+        search(static_cast<std::uint64_t>(k));
     const bool done = episode_ >= options_.episodes;
     // Due at the end, and when the batch passed a multiple of `every`.
     const auto due = [&](long every) { return done || episode_ / every > before / every; };
@@ -214,14 +293,21 @@ void PolicyTrainer::saveCheckpoint(const std::filesystem::path& file) const {
   rng << minibatchRandom_;
   archive.write("minibatchRandom", c10::IValue(rng.str()));
   const double counters[] = {static_cast<double>(episode_), bestValidation_, lossSum_,
-                             static_cast<double>(lossCount_), secondsTrained()};
-  archive.write("counters", torch::tensor(at::ArrayRef<double>(counters, 5), torch::kFloat64));
-  PolicyBatch s, a;
-  Eigen::VectorXd r;
-  buffer_.exportEpisodes(s, a, r);
-  archive.write("bufferStates", batchTensor(s));
-  archive.write("bufferActions", batchTensor(a));
-  archive.write("bufferRewards", batchTensor(PolicyBatch(r)));
+                             static_cast<double>(lossCount_), secondsTrained(), static_cast<double>(searches_),
+                             static_cast<double>(gainSearches_), searchGainSum_};
+  archive.write("counters", torch::tensor(at::ArrayRef<double>(counters, 8), torch::kFloat64));
+  const auto writeBuffer = [&](const ReplayBuffer& buffer, const std::string& name) {
+    PolicyBatch s, a;
+    Eigen::VectorXd r;
+    buffer.exportEpisodes(s, a, r);
+    archive.write(name + "States", batchTensor(s));
+    archive.write(name + "Actions", batchTensor(a));
+    archive.write(name + "Rewards", batchTensor(PolicyBatch(r)));
+  };
+  writeBuffer(buffer_, "buffer");
+  writeBuffer(demonstrations_, "demonstrations");
+  archive.write("recentRewards", batchTensor(Eigen::Map<const PolicyBatch>(recentRewards_.data(),
+                                                                           static_cast<Eigen::Index>(recentRewards_.size()), 1)));
   archive.write("learning", tableTensor(learning_, 6, [](const LearningRecord& x) {
                   return std::vector<double>{static_cast<double>(x.episode), x.meanReward, x.validFraction,
                                              x.criticLoss, x.sigma, x.seconds};
@@ -236,7 +322,7 @@ void PolicyTrainer::saveCheckpoint(const std::filesystem::path& file) const {
   saveArchiveAtomically(archive, file);
 }
 
-void PolicyTrainer::resume(const std::filesystem::path& file) {
+void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings) {
   const std::string name = file.string();
   if (!std::filesystem::exists(file)) throw InputError(name, 0, "no checkpoint to resume from");
   const auto corrupt = [&](const std::string& what) { return InputError(name, 0, "corrupt checkpoint: " + what); };
@@ -253,11 +339,11 @@ void PolicyTrainer::resume(const std::filesystem::path& file) {
                                     " (state, action, [hidden], slope[, critic model]), this run's " +
                                     layoutText(learner_.layout()));
     archive.read("seed", value);
-    if (value.toStringRef() != std::to_string(options_.seed))
+    if (sameSettings && value.toStringRef() != std::to_string(options_.seed))
       throw InputError(name, 0, "the checkpoint was written with seed " + value.toStringRef() +
                                     ", this run has seed " + std::to_string(options_.seed));
     // Checkpoints before the settings were recorded have none to compare.
-    if (archive.try_read("settings", value)) {
+    if (sameSettings && archive.try_read("settings", value)) {
       const std::string difference = firstDifference(value.toStringRef(), options_);
       if (!difference.empty())
         throw InputError(name, 0, "the checkpoint's run had other settings (" + difference +
@@ -270,29 +356,50 @@ void PolicyTrainer::resume(const std::filesystem::path& file) {
     std::mt19937_64 rng;
     rngText >> rng;
     if (!rngText) throw corrupt("the random generator's state does not parse");
-    torch::Tensor counters, s, a, r, learning, validation;
+    torch::Tensor counters, learning, validation;
     archive.read("counters", counters);
-    archive.read("bufferStates", s);
-    archive.read("bufferActions", a);
-    archive.read("bufferRewards", r);
     archive.read("learning", learning);
     archive.read("validation", validation);
     const auto table = [&](const torch::Tensor& t, long columns, const std::string& what) {
       if (t.scalar_type() != torch::kFloat64 || t.dim() != 2 || t.size(1) != columns)
         throw corrupt(what + " has the wrong shape or type");
     };
-    if (counters.scalar_type() != torch::kFloat64 || counters.dim() != 1 || counters.size(0) != 5)
+    // Checkpoints from before the searches have 5 counters, no demonstrations and no
+    // recent rewards (the buffer's newest were all episodes then).
+    if (counters.scalar_type() != torch::kFloat64 || counters.dim() != 1 ||
+        (counters.size(0) != 5 && counters.size(0) != 8))
       throw corrupt("the counters have the wrong shape or type");
-    table(s, learner_.layout().stateSize, "the buffer's states");
-    table(a, learner_.layout().actionSize, "the buffer's actions");
-    table(r, 1, "the buffer's rewards");
     table(learning, 6, "the learning curve");
     table(validation, 5, "the validation curve");
-    if (a.size(0) != s.size(0) || r.size(0) != s.size(0) || s.size(0) > options_.bufferCapacity)
-      throw corrupt("the buffer holds " + std::to_string(s.size(0)) + " episodes, more than <bufferCapacity> or "
-                    "unequal parts");
-    ReplayBuffer buffer(learner_.layout().stateSize, learner_.layout().actionSize, options_.bufferCapacity);
-    buffer.importEpisodes(batchFromTensor(s), batchFromTensor(a), batchFromTensor(r).col(0));
+    const auto readBuffer = [&](const std::string& prefix, const std::string& what, bool optional) {
+      ReplayBuffer buffer(learner_.layout().stateSize, learner_.layout().actionSize, options_.bufferCapacity);
+      torch::Tensor s, a, r;
+      if (optional && !archive.try_read(prefix + "States", s)) return buffer;
+      if (!optional) archive.read(prefix + "States", s);
+      archive.read(prefix + "Actions", a);
+      archive.read(prefix + "Rewards", r);
+      table(s, learner_.layout().stateSize, what + "'s states");
+      table(a, learner_.layout().actionSize, what + "'s actions");
+      table(r, 1, what + "'s rewards");
+      if (a.size(0) != s.size(0) || r.size(0) != s.size(0) || s.size(0) > options_.bufferCapacity)
+        throw corrupt(what + " holds " + std::to_string(s.size(0)) + " rows, more than <bufferCapacity> or "
+                      "unequal parts");
+      buffer.importEpisodes(batchFromTensor(s), batchFromTensor(a), batchFromTensor(r).col(0));
+      return buffer;
+    };
+    ReplayBuffer buffer = readBuffer("buffer", "the buffer", false);
+    ReplayBuffer demonstrations = readBuffer("demonstrations", "the demonstrations", true);
+    std::vector<double> recent;
+    torch::Tensor recentTensor;
+    if (archive.try_read("recentRewards", recentTensor)) {
+      table(recentTensor, 1, "the recent rewards");
+      const PolicyBatch column = batchFromTensor(recentTensor);
+      recent.assign(column.data(), column.data() + column.size());
+    } else {
+      recent = buffer.recentRewards(recentCapacity(options_));
+      std::reverse(recent.begin(), recent.end());
+    }
+    while (static_cast<long>(recent.size()) > recentCapacity(options_)) recent.erase(recent.begin());
     std::vector<LearningRecord> learningRecords;
     const auto l = learning.accessor<double, 2>();
     for (long i = 0; i < learning.size(0); ++i)
@@ -312,8 +419,14 @@ void PolicyTrainer::resume(const std::filesystem::path& file) {
     lossSum_ = c[2];
     lossCount_ = static_cast<long>(c[3]);
     secondsBefore_ = c[4];
+    const bool searched = counters.size(0) == 8;
+    searches_ = searched ? static_cast<long>(c[5]) : 0;
+    gainSearches_ = searched ? static_cast<long>(c[6]) : 0;
+    searchGainSum_ = searched ? c[7] : 0.0;
     minibatchRandom_ = rng;
     buffer_ = std::move(buffer);
+    demonstrations_ = std::move(demonstrations);
+    recentRewards_ = std::move(recent);
     learning_ = std::move(learningRecords);
     validation_ = std::move(validationRecords);
   } catch (const InputError&) {

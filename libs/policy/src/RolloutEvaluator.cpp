@@ -22,7 +22,7 @@ void rewardsOfSlice(const std::vector<EpisodeTask>& tasks, const PolicyBatch& ac
 ThreadRollouts::ThreadRollouts(int threads) : threads_(threads) {}
 
 std::vector<double> ThreadRollouts::rewards(const std::vector<EpisodeTask>& tasks,
-                                            const PolicyBatch& actions, std::uint64_t, std::uint64_t) {
+                                            const PolicyBatch& actions, const EpisodeRange&) {
   std::vector<double> r;
   rewardsOfSlice(tasks, actions, 0, 1, threads_, r);
   return r;

@@ -23,6 +23,13 @@ struct LearningRates {
   double critic = 1e-4;
 };
 
+// Demonstrated actions the actor is pulled towards (search-guided exploration,
+// PolicyTrainOptions::imitationWeight): rows of states and the actions to imitate there.
+struct Imitation {
+  PolicyBatch states, actions;  // no rows: no pull
+  double weight = 0;
+};
+
 class ActorCritic {
  public:
   // Weights initialised by LibTorch's default rule from `seed`. A non-empty `startAction`
@@ -50,7 +57,9 @@ class ActorCritic {
   // With CriticModel::validityAndQuality and validityBarrier > 0 the actor climbs
   // q(s, a) + validityBarrier * log p(s, a) instead of the expected reward (and returns
   // mean q).
-  double updateActor(const PolicyBatch& states, double boundPenalty = 0, double validityBarrier = 0);
+  // A non-empty `imitation` adds weight * mean over its rows of |pi(s) - a|^2.
+  double updateActor(const PolicyBatch& states, double boundPenalty = 0, double validityBarrier = 0,
+                     const Imitation& imitation = {});
 
   // Both networks and both optimisers' states, for checkpoints.
   void save(torch::serialize::OutputArchive& archive) const;

@@ -31,7 +31,7 @@ class MpiRollouts final : public RolloutEvaluator {
   MpiRollouts(const MpiSession& session, const PolicyEnvironment& environment, int threads);
   ~MpiRollouts() override;  // tells the other ranks to stop
   std::vector<double> rewards(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
-                              std::uint64_t seed, std::uint64_t first) override;
+                              const EpisodeRange& range) override;
   std::string description() const override;
 
  private:

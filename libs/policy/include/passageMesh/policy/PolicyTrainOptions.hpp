@@ -59,6 +59,15 @@ struct PolicyTrainOptions {
   // With validityAndQuality: 0 makes the actor climb the expected reward; lambda > 0 makes
   // it climb q + lambda log p (ActorCritic::updateActor).
   double validityBarrier = 0;
+  // Search-guided exploration (docs/policy.md): every searchEvery episodes (0: never, the
+  // paper's) a CMA-ES search of searchBudget meshes, started at the actor's action, on a
+  // passage of its own stream; every mesh it builds enters the replay buffer (the critic
+  // learns the regions the noise does not reach), and its best action becomes a
+  // demonstration. imitationWeight > 0 adds to the actor's loss the squared distance to the
+  // demonstrations whose Q is above the critic's value of the actor's action there.
+  long searchEvery = 0;
+  int searchBudget = 64;
+  double imitationWeight = 0;
   std::uint64_t seed = 1;         // weights, episodes, noise and minibatches
   int threads = 0;                // rollout threads per process (0 = all cores)
 

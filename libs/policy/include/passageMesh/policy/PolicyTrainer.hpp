@@ -6,8 +6,10 @@
 // plus Gaussian noise from each episode's own noise stream, the rewards are computed by the
 // RolloutEvaluator (threads or MPI ranks), and then, episode by episode in order, the
 // episode enters the replay buffer and the learner takes its updates (critic every
-// episode, actor every actorUpdateEvery). Nothing depends on the number of threads or
-// ranks, and a checkpoint taken between batches resumes to the same weights bit for bit.
+// episode, actor every actorUpdateEvery). With options.searchEvery > 0 a search of one
+// passage's actions follows every searchEvery episodes (search-guided exploration,
+// PolicyTrainOptions.hpp). Nothing depends on the number of threads or ranks, and a
+// checkpoint taken between batches resumes to the same weights bit for bit.
 #include <atomic>
 #include <chrono>
 #include <filesystem>
@@ -49,8 +51,11 @@ class PolicyTrainer {
                 RolloutEvaluator& rollouts);
 
   // Continues from a checkpoint written by saveCheckpoint with the same layout and seed;
-  // an unreadable or mismatched checkpoint is an InputError naming the file.
-  void resume(const std::filesystem::path& checkpoint);
+  // an unreadable or mismatched checkpoint is an InputError naming the file. With
+  // sameSettings false the checkpoint may come from a run with another seed and other
+  // settings (the same networks): its weights, optimisers, buffer, curves and episode
+  // count carry on under this trainer's settings (policyTrain -startFrom).
+  void resume(const std::filesystem::path& checkpoint, bool sameSettings = true);
 
   struct Events {
     std::function<void(const PolicyTrainer&)> afterBatch;        // progress lines
@@ -68,6 +73,20 @@ class PolicyTrainer {
   long episode() const { return episode_; }
   const ActorCritic& learner() const { return learner_; }
   const ReplayBuffer& buffer() const { return buffer_; }
+  // The rewards of the newest min(count, 1000 or logEvery) training episodes, newest first
+  // (the searches' meshes, which also enter the buffer, are not episodes).
+  std::vector<double> recentRewards(long count) const;
+  // The searches' best actions (rewards: their Q).
+  const ReplayBuffer& demonstrations() const { return demonstrations_; }
+  // Searches so far, and their mean gain (best Q minus the Q of the actor's action) over
+  // those where the actor's mesh was valid.
+  struct SearchSummary {
+    long searches = 0;
+    double meanGain = 0;
+  };
+  SearchSummary searchSummary() const {
+    return {searches_, gainSearches_ ? searchGainSum_ / static_cast<double>(gainSearches_) : 0.0};
+  }
   const std::vector<LearningRecord>& learningCurve() const { return learning_; }
   const std::vector<ValidationRecord>& validationCurve() const { return validation_; }
   // The validation of a fixed action for every passage (the environment's default action:
@@ -86,12 +105,18 @@ class PolicyTrainer {
   void runBatch();
   void learnFrom(const std::vector<double>& state, const std::vector<double>& action, double reward);
   void validate();
+  void search(std::uint64_t index);
+  Imitation imitationBatch();
 
   PolicyTrainOptions options_;
   const PolicyEnvironment& environment_;
   RolloutEvaluator& rollouts_;
   ActorCritic learner_;
   ReplayBuffer buffer_;
+  ReplayBuffer demonstrations_;
+  std::vector<double> recentRewards_;  // newest last, at most recentCapacity()
+  long searches_ = 0, gainSearches_ = 0;
+  double searchGainSum_ = 0;
   std::mt19937_64 minibatchRandom_;
   long episode_ = 0;
   std::vector<LearningRecord> learning_;

@@ -10,13 +10,21 @@
 
 namespace passageMesh {
 
+// Which episodes a batch's rows are: row i is episode first + i * step of stream `seed` (a
+// remote rank draws them again from that). step 0: every row is the same episode, as in a
+// search over one passage's actions.
+struct EpisodeRange {
+  std::uint64_t seed = 0, first = 0, step = 1;
+  std::uint64_t episode(std::size_t row) const { return first + row * step; }
+};
+
 class RolloutEvaluator {
  public:
   virtual ~RolloutEvaluator() = default;
-  // The reward of each task under the action in the same row. `tasks` are episodes
-  // first, first + 1, ... of stream `seed` (a remote rank draws them again from that).
+  // The reward of each task under the action in the same row; `tasks` are the episodes
+  // `range` names.
   virtual std::vector<double> rewards(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
-                                      std::uint64_t seed, std::uint64_t first) = 0;
+                                      const EpisodeRange& range) = 0;
   // Processes and threads taking part, for the progress line.
   virtual std::string description() const = 0;
 };
@@ -25,7 +33,7 @@ class ThreadRollouts final : public RolloutEvaluator {
  public:
   explicit ThreadRollouts(int threads);  // 0 = all cores
   std::vector<double> rewards(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
-                              std::uint64_t seed, std::uint64_t first) override;
+                              const EpisodeRange& range) override;
   std::string description() const override;
 
  private:
