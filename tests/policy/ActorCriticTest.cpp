@@ -146,4 +146,11 @@ TEST(ActorCritic, ImitationPullsTheActorToTheDemonstratedActions) {
   EXPECT_GT((before - target).cwiseAbs().maxCoeff(), 0.3);
   EXPECT_LT((pulled.act(s) - target).cwiseAbs().maxCoeff(), 0.05);
   EXPECT_GT((untouched.act(s) - target).cwiseAbs().maxCoeff(), 0.3);
+
+  // Demonstrations on the bounds pull to 0.95 of the half-range, not into tanh's flat end.
+  PolicyBatch onBounds(4, 2);
+  onBounds << 1, -1, -1, 1, 1, 1, -1, -1;
+  ActorCritic bounded(layout, {1e-2, 1e-3}, 3);
+  for (int step = 0; step < 600; ++step) bounded.updateActor(s, 0, 0, Imitation{s, onBounds, 10.0});
+  EXPECT_LT((bounded.act(s) - 0.95 * onBounds).cwiseAbs().maxCoeff(), 0.01);
 }

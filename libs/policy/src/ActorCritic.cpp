@@ -124,8 +124,14 @@ double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty, 
     loss = loss + boundPenalty * torch::relu(u.abs() - edge).pow(2).mean();
   }
   if (imitation.weight > 0 && imitation.states.rows() > 0) {
+    // Measured before the tanh, to targets at most 95 % of the half-range out: a target
+    // on the bound (CMA-ES's bests often are) would drive the output to infinity, and a
+    // distance after the tanh has no gradient left once the output saturates. With the
+    // distance after the tanh a training's actor ended on its bounds for every state,
+    // every mesh invalid (docs/policy.md).
+    const torch::Tensor target = torch::atanh(tensorOf(imitation.actions).clamp(-0.95, 0.95));
     const torch::Tensor distance =
-        (n.actor->forward(tensorOf(imitation.states)) - tensorOf(imitation.actions)).pow(2).sum(1);
+        (n.actor->beforeOutput(tensorOf(imitation.states)) - target).pow(2).sum(1);
     loss = loss + imitation.weight * distance.mean();
   }
   loss.backward();

@@ -57,7 +57,8 @@ class ActorCritic {
   // With CriticModel::validityAndQuality and validityBarrier > 0 the actor climbs
   // q(s, a) + validityBarrier * log p(s, a) instead of the expected reward (and returns
   // mean q).
-  // A non-empty `imitation` adds weight * mean over its rows of |pi(s) - a|^2.
+  // A non-empty `imitation` adds weight * mean over its rows of |u(s) - atanh(a')|^2, u the
+  // actor's output before tanh and a' the demonstrated action clipped to +-0.95.
   double updateActor(const PolicyBatch& states, double boundPenalty = 0, double validityBarrier = 0,
                      const Imitation& imitation = {});
 
