@@ -63,8 +63,9 @@ struct PolicyTrainOptions {
   // paper's) a CMA-ES search of searchBudget meshes, started at the actor's action, on a
   // passage of its own stream; every mesh it builds enters the replay buffer (the critic
   // learns the regions the noise does not reach), and its best action becomes a
-  // demonstration. imitationWeight > 0 adds to the actor's loss the squared distance to the
-  // demonstrations whose Q is above the critic's value of the actor's action there.
+  // demonstration. imitationWeight > 0 adds to the actor's loss the squared distance
+  // (ActorCritic::updateActor) to the demonstrations whose Q is above the critic's value
+  // of the actor's action there.
   long searchEvery = 0;
   int searchBudget = 64;
   double imitationWeight = 0;
