@@ -4,24 +4,16 @@
 // from `start` (the defaults' action), seed 1, with `budget` meshes built on all cores.
 #include <vector>
 
-#include "passageMesh/optimize/Optimizer.hpp"
+#include "passageMesh/policy/ActionSearch.hpp"
 #include "passageMesh/policy/PolicyEnvironment.hpp"
 
 namespace passageMesh::bench {
 
 inline OptimizationResult searchPassage(const EpisodeTask& task, const std::vector<double>& start, long budget) {
-  const auto size = static_cast<Eigen::Index>(start.size());
-  BoxProblem box;
-  box.lower = Eigen::VectorXd::Constant(size, -1.0);
-  box.upper = Eigen::VectorXd::Constant(size, 1.0);
-  OptimizerOptions options;
-  options.budget = budget;
-  options.seed = 1;
-  options.start = Eigen::Map<const Eigen::VectorXd>(start.data(), size);
   const PointObjective q = [&task](const Eigen::VectorXd& x) {
     return task.reward(std::vector<double>(x.data(), x.data() + x.size()));
   };
-  return optimize(box, evaluateInParallel(q, 0), options);
+  return searchActions(start, evaluateInParallel(q, 0), budget, 1, OptimizerOptions{}.patternSearchShare);
 }
 
 }  // namespace passageMesh::bench

@@ -6,7 +6,7 @@
 # Prints blade,oneShotQ,polishedQ,seconds (seconds: the polish alone, wall time).
 # `defaults`: the same short search from etc/meshDictDefaults.xml instead (the baseline).
 set -euo pipefail
-[ $# -ge 1 ] || { echo "usage: bench/policyPolish.sh BUDGET [POLICY.xml]" >&2; exit 1; }
+[ $# -ge 1 ] || { echo "usage: bench/policyPolish.sh BUDGET [POLICY.xml | defaults]" >&2; exit 1; }
 budget="$1"
 root="$(cd "$(dirname "$0")/.." && pwd)"
 policy="${2:-$root/etc/policy/policy.xml}"

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "passageMesh/core/InputError.hpp"
-#include "passageMesh/optimize/Optimizer.hpp"
+#include "passageMesh/policy/ActionSearch.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
 #include "TorchTensors.hpp"
 
@@ -181,28 +181,19 @@ void PolicyTrainer::search(std::uint64_t index) {
   const EpisodeTask task = environment_.draw(range.seed, index);
   const int m = environment_.actionSize();
   const PolicyBatch start = learner_.act(statesOf({task}, environment_.stateSize()));
-  BoxProblem box;
-  box.lower = Eigen::VectorXd::Constant(m, -1.0);
-  box.upper = Eigen::VectorXd::Constant(m, 1.0);
-  OptimizerOptions o;
-  o.budget = options_.searchBudget;
-  o.seed = episodeRandom(options_.seed, index, searchStream)();
-  o.start = start.row(0).transpose();
-  o.patternSearchShare = 0;  // one mesh at a time would leave the other cores idle
-  double startQ = invalidMeshQuality;
-  bool first = true;
   const BatchObjective objective = [&](const std::vector<Eigen::VectorXd>& points) {
     PolicyBatch actions(static_cast<Eigen::Index>(points.size()), m);
     for (std::size_t i = 0; i < points.size(); ++i) actions.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
-    const std::vector<double> q = rollouts_.rewards(std::vector<EpisodeTask>(points.size(), task), actions, range);
-    for (std::size_t i = 0; i < points.size(); ++i)
-      buffer_.add(task.state, std::vector<double>(points[i].data(), points[i].data() + m), q[i]);
-    if (first) startQ = q.front();  // CMA-ES evaluates its start alone first
-    first = false;
-    return q;
+    return rollouts_.rewards(std::vector<EpisodeTask>(points.size(), task), actions, range);
   };
-  const OptimizationResult result = optimize(box, objective, o);
+  // No pattern search: it builds one mesh at a time and would leave the other cores idle.
+  const OptimizationResult result =
+      searchActions(std::vector<double>(start.data(), start.data() + m), objective, options_.searchBudget,
+                    episodeRandom(options_.seed, index, searchStream)(), 0.0);
+  for (const Evaluation& e : result.history)
+    buffer_.add(task.state, std::vector<double>(e.point.data(), e.point.data() + m), e.value);
   ++searches_;
+  const double startQ = result.history.front().value;  // CMA-ES evaluates its start first
   if (startQ > invalidMeshQuality) {
     ++gainSearches_;
     searchGainSum_ += result.bestValue - startQ;
