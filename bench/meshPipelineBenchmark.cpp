@@ -10,8 +10,14 @@
 //       blades and conditions from PassageSampler's ranges, meshing parameters at the
 //       defaults; median and 95th percentile over the passages whose periodic boundaries
 //       clear the blade (one run each)
+//   build/bench/meshPipelineBenchmark digest [passages=50] [seed=20261203]
+//       one line: a hash of every node coordinate's bits and of Q of the tutorials' meshes
+//       and of the sampler passages' (defaults), then how many were valid. A change meant
+//       to leave the meshes bit for bit as they were (a faster solver, a split of code)
+//       must leave the line as it was.
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -99,9 +105,49 @@ int sampled(int passages, std::uint64_t seed) {
   return 0;
 }
 
+// FNV-1a over the bytes of each value.
+struct Digest {
+  std::uint64_t hash = 1469598103934665603ULL;
+  void add(double v) {
+    unsigned char bytes[sizeof v];
+    std::memcpy(bytes, &v, sizeof v);
+    for (unsigned char b : bytes) hash = (hash ^ b) * 1099511628211ULL;
+  }
+  void add(const CheckedMesh& m) {
+    add(m.hoh.valid ? 1.0 : 0.0);
+    for (const StructuredBlock& b : m.hoh.mesh.blocks) {
+      for (double v : b.x) add(v);
+      for (double v : b.y) add(v);
+    }
+    add(m.quality.Q);
+  }
+};
+
+int digest(int passages, std::uint64_t seed) {
+  MeshQualityWorkspace workspace;
+  Digest d;
+  int meshes = 0, valid = 0;
+  auto add = [&](const BladeShape& blade, const PassageCondition& condition, double chord) {
+    const CheckedMesh m = checkedMesh(blade, condition, MeshingParameters::defaults(chord), workspace);
+    d.add(m);
+    ++meshes;
+    valid += m.hoh.valid ? 1 : 0;
+  };
+  for (const std::string& name : bench::tutorialNames()) {
+    const bench::TutorialPassage tutorial = bench::loadTutorialPassage(name);
+    add(BladeShape(tutorial.blade), tutorial.condition, tutorial.blade.chord);
+  }
+  for (const PassageDraw& p : samplePassages(passages, seed)) add(BladeShape(p.blade), p.condition, p.blade.chord);
+  std::printf("digest %016llx of %d meshes (%d valid)\n", static_cast<unsigned long long>(d.hash), meshes, valid);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::strcmp(argv[1], "digest") == 0)
+    return digest(argc > 2 ? std::max(0, std::atoi(argv[2])) : 50,
+                  argc > 3 ? std::strtoull(argv[3], nullptr, 10) : 20261203);
   if (argc > 1 && std::strcmp(argv[1], "sampler") == 0)
     return sampled(argc > 2 ? std::max(1, std::atoi(argv[2])) : 200,
                    argc > 3 ? std::strtoull(argv[3], nullptr, 10) : 20261203);

