@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace passageMesh {
@@ -239,13 +240,22 @@ double thompsonResidual(const StructuredBlock& o, const GridControl& control,
   checkSizes(o, control, rows);
   // Grid takes a mutable block for the sweeps; the residual only reads it.
   const Grid grid(const_cast<StructuredBlock&>(o), control);
-  double largest = 0;
+  // The measure's division and square root only where a node may beat the largest so far:
+  // r^2 = a / b with a = rx^2 + ry^2, b = |J| scale^2, tested against the largest with a
+  // margin far above rounding, so the result is the exact measure's, bit for bit.
+  double largest = 0, threshold = 0;
   for (int j = rows.first(); j <= rows.last(o); ++j)
     for (int i = 0; i < grid.n(); ++i) {
       double rx, ry, scale, jacobian;
       grid.residual(i, j, rx, ry, scale, jacobian);
-      const double r = std::sqrt((rx * rx + ry * ry) / std::abs(jacobian)) / scale;
-      if (!(r <= largest)) largest = r;  // also catches NaN
+      const double a = rx * rx + ry * ry, b = std::abs(jacobian) * scale * scale;
+      // (a NaN, an infinity or b = 0 go on to the exact measure, as before)
+      if (b > 0 && b <= std::numeric_limits<double>::max() && a <= threshold * b) continue;
+      const double r = std::sqrt(a / std::abs(jacobian)) / scale;
+      if (!(r <= largest)) {  // also catches NaN
+        largest = r;
+        threshold = largest * largest * (1 - 1e-9);
+      }
     }
   return largest;
 }
