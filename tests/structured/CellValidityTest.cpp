@@ -38,3 +38,14 @@ TEST(CellValidity, FindsTheFirstInvalidCellByBlockRowAndColumn) {
   EXPECT_EQ(findInvalidCell(mesh.blocks[1]), "C cell (1, 0) is folded or degenerate");
   EXPECT_EQ(findInvalidCell(uniformBlock("D", 3, 3)), "");
 }
+
+TEST(CellValidity, CellsValidFromSkipsTheRowsBelow) {
+  StructuredBlock block = uniformBlock("B", 4, 4);
+  EXPECT_TRUE(cellsValidFrom(block, 0));
+  block.xAt(2, 1) = -1;  // folds the four cells around node (2, 1): rows 0 and 1
+  EXPECT_FALSE(cellsValidFrom(block, 0));
+  EXPECT_FALSE(cellsValidFrom(block, 1));
+  EXPECT_TRUE(cellsValidFrom(block, 2));
+  EXPECT_TRUE(cellsValidFrom(block, 3));   // no cell from the last row up
+  EXPECT_FALSE(cellsValidFrom(block, -1)); // a row below 0 is row 0
+}

@@ -1,6 +1,7 @@
 #include "passageMesh/mesh/ThompsonMultigrid.hpp"
 
 #include "passageMesh/mesh/GridCoarsening.hpp"
+#include "passageMesh/structured/CellValidity.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,22 +11,6 @@
 namespace passageMesh {
 
 namespace {
-
-double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
-
-// True when every cell from row `firstRow` outwards has four convex corners.
-bool cellsValid(const StructuredBlock& o, int firstRow) {
-  for (int j = firstRow; j + 1 < o.nj; ++j)
-    for (int i = 0; i + 1 < o.ni; ++i) {
-      const double x[4] = {o.xAt(i, j), o.xAt(i + 1, j), o.xAt(i + 1, j + 1), o.xAt(i, j + 1)};
-      const double y[4] = {o.yAt(i, j), o.yAt(i + 1, j), o.yAt(i + 1, j + 1), o.yAt(i, j + 1)};
-      for (int k = 0; k < 4; ++k) {
-        const int a = (k + 1) % 4, b = (k + 3) % 4;
-        if (!(cross(x[a] - x[k], y[a] - y[k], x[b] - x[k], y[b] - y[k]) > 0)) return false;
-      }
-    }
-  return true;
-}
 
 struct Level {
   StructuredBlock* block = nullptr;  // the finest level's is the caller's
@@ -162,7 +147,7 @@ class Multigrid {
     const int nf = fine.n();
     interpolateDisplacement(coarse.start, *coarse.block, c, f, fine.rows, correctionX_, correctionY_);
     const std::vector<double> x0 = f.x, y0 = f.y;
-    const bool validBefore = cellsValid(f, fine.rows.first() - 1);
+    const bool validBefore = cellsValidFrom(f, fine.rows.first() - 1);
     double factor = 1;
     for (int attempt = 0; attempt < 5; ++attempt, factor *= 0.5) {
       for (std::size_t k = 0; k < f.x.size(); ++k) {
@@ -173,7 +158,7 @@ class Multigrid {
         f.xAt(nf, j) = f.xAt(0, j);
         f.yAt(nf, j) = f.yAt(0, j);
       }
-      if (!validBefore || cellsValid(f, fine.rows.first() - 1)) return;
+      if (!validBefore || cellsValidFrom(f, fine.rows.first() - 1)) return;
     }
     f.x = x0;
     f.y = y0;

@@ -1,5 +1,7 @@
 #include "passageMesh/structured/CellValidity.hpp"
 
+#include <algorithm>
+
 namespace passageMesh {
 
 std::string findInvalidCell(const StructuredBlock& block) {
@@ -12,6 +14,16 @@ std::string findInvalidCell(const StructuredBlock& block) {
                ") is folded or degenerate";
     }
   return "";
+}
+
+bool cellsValidFrom(const StructuredBlock& block, int firstRow) {
+  CellCorners x, y;
+  for (int j = std::max(0, firstRow); j + 1 < block.nj; ++j)
+    for (int i = 0; i + 1 < block.ni; ++i) {
+      cellCorners(block, i, j, x, y);
+      if (!cellIsValid(x, y)) return false;
+    }
+  return true;
 }
 
 std::string findInvalidCell(const StructuredMesh& mesh) {

@@ -42,4 +42,8 @@ std::string findInvalidCell(const StructuredMesh& mesh);
 // The same for one block (no mesh around it to build: HohMesh checks its O-block alone).
 std::string findInvalidCell(const StructuredBlock& block);
 
+// True when every cell of `block` from row `firstRow` up is valid: the multigrid's test of
+// a coarse-grid correction, which needs no location.
+bool cellsValidFrom(const StructuredBlock& block, int firstRow);
+
 }  // namespace passageMesh
