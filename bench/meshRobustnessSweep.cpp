@@ -27,6 +27,7 @@ namespace {
 
 struct Outcome {
   bool valid = false, finite = true, converged = false;
+  bool moved = false;    // valid with the outer loop moved away from the blade (HohMeshOptions::outerLoopRoom)
   int sweeps = 0;
   double seconds = 0;
   double clearance = 0;  // chords
@@ -55,15 +56,18 @@ int main(int argc, char** argv) {
     out.sweeps = hoh.smoothing.iterations;
     out.finite = hasOnlyFiniteCoordinates(hoh.mesh);
     if (hoh.valid) out.quality = computeMeshQuality(hoh.mesh).Q;
+    out.moved = !hoh.outerLoopMoved.empty();
     out.problem = hoh.valid ? (hoh.retryWithout.empty() ? "" : "meshed without orthogonality at " + hoh.retryWithout)
                             : hoh.problem;
+    if (out.moved) out.problem += (out.problem.empty() ? "" : "; ") + ("outer loop moved: " + hoh.outerLoopMoved);
   });
-  int valid = 0, notFinite = 0, notConverged = 0;
+  int valid = 0, notFinite = 0, notConverged = 0, moved = 0;
   double slowest = 0;
   for (int k = 0; k < draws; ++k) {
     const PassageDraw& d = all[static_cast<std::size_t>(k)];
     const Outcome& o = outcomes[static_cast<std::size_t>(k)];
     valid += o.valid;
+    moved += o.valid && o.moved;
     notFinite += o.valid && !o.finite;
     notConverged += o.valid && !o.converged;
     slowest = std::max(slowest, o.seconds);
@@ -93,7 +97,8 @@ int main(int argc, char** argv) {
     else if (b + 1 < bins) std::printf("  (%.2f, %.2f]: %d / %d\n", edges[b], edges[b + 1], ok, inBin);
     else std::printf("  > %.2f: %d / %d\n", edges[b], ok, inBin);
   }
-  std::printf("valid %d of %d (%.1f %%); valid but not converged %d; non-finite %d; slowest "
-              "%.2f s\n", valid, draws, 100.0 * valid / draws, notConverged, notFinite, slowest);
+  std::printf("valid %d of %d (%.1f %%; %d of them with the outer loop moved); valid but not converged %d; "
+              "non-finite %d; slowest %.2f s\n", valid, draws, 100.0 * valid / draws, moved, notConverged,
+              notFinite, slowest);
   return notFinite == 0 ? 0 : 1;
 }

@@ -148,9 +148,50 @@ TEST(HohMesh, SaysWhenAnInterfaceCutsTheBlade) {
   c = paperCondition(C);
   MeshingParameters m = MeshingParameters::defaults(C);
   m.betaIn = 0;
-  hoh = buildHohMesh(blade, c, m);
+  HohMeshOptions asked;  // no move of the outer loop (next test)
+  asked.outerLoopRoom = 0;
+  hoh = buildHohMesh(blade, c, m, asked);
   EXPECT_FALSE(hoh.valid);
   EXPECT_NE(hoh.problem.find("the inlet interface (x = "), std::string::npos) << hoh.problem;
+}
+
+// Where the outer loop leaves the blade too little room, the loop is moved away (toward
+// the defaults' periodic boundaries and the interfaces' upper bound) just far enough, and
+// the mesh is built again; a mesh valid as asked, and a passage cut by a periodic boundary,
+// are left as they are.
+TEST(HohMesh, MovesTheOuterLoopAwayWhereItLeavesTooLittleRoom) {
+  const BladeShape blade(testData::typicalTurbineBlade());
+  const double C = blade.parameters().chord;
+  const PassageCondition c = paperCondition(C);
+  MeshingParameters m = MeshingParameters::defaults(C);
+  m.betaIn = 0;  // the inlet interface through the leading edge
+  m.nT = 200;
+  HohMeshOptions asked;
+  asked.outerLoopRoom = 0;
+  const HohMesh cut = buildHohMesh(blade, c, m, asked);
+  ASSERT_FALSE(cut.valid);
+
+  const HohMesh hoh = buildHohMesh(blade, c, m);
+  ASSERT_TRUE(hoh.valid) << hoh.problem;
+  EXPECT_EQ(hoh.firstTryProblem, cut.problem);
+  EXPECT_EQ(hoh.outerLoopMoved.find("betaIn 0 -> "), 0u) << hoh.outerLoopMoved;
+  EXPECT_GT(hoh.parameters.betaIn, 0.0);
+  EXPECT_LT(hoh.parameters.betaIn, MeshingParameters::upperBounds(C)[3]);
+  // Just far enough: the room asked for, to the bisection's resolution.
+  const double room = bladeClearance(blade, PassageBoundary(blade, c, hoh.parameters)) / C;
+  EXPECT_GE(room, HohMeshOptions{}.outerLoopRoom);
+  EXPECT_LT(room, HohMeshOptions{}.outerLoopRoom + 0.01);
+  // Only the outer loop's parameters move.
+  EXPECT_EQ(hoh.parameters.nT, m.nT);
+  EXPECT_EQ(hoh.parameters.gammaLe, m.gammaLe);
+  EXPECT_EQ(hoh.parameters.gammaTe, m.gammaTe);
+
+  const MeshingParameters defaults = MeshingParameters::defaults(C);
+  const HohMesh asIs = buildHohMesh(blade, c, defaults);
+  ASSERT_TRUE(asIs.valid);
+  EXPECT_TRUE(asIs.outerLoopMoved.empty());
+  EXPECT_TRUE(asIs.firstTryProblem.empty());
+  EXPECT_EQ(asIs.parameters.toArray(), defaults.toArray());
 }
 
 // Draw 475 of the robustness sweep (seed 20261122; clearance 0.06 chord): the wall's
@@ -162,6 +203,7 @@ TEST(HohMesh, TriesWithoutTheWallsOrthogonalityWhereTheLinesFold) {
   const BladeShape blade(d.blade);
   HohMeshOptions without;
   without.triesWithoutWallOrthogonality = false;
+  without.outerLoopRoom = 0;  // (with 0.06 chord of room, moving the loop meshes it too)
   const HohMesh folded = buildHohMesh(blade, d.condition, d.parameters, without);
   ASSERT_FALSE(folded.valid);
   EXPECT_NE(folded.problem.find("fold"), std::string::npos) << folded.problem;

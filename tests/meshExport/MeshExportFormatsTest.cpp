@@ -65,7 +65,9 @@ TEST(FoamPolyMesh, CountsAndUpperTriangularOrder) {
   EXPECT_EQ(nNeighbours, static_cast<int>(p.internalEdges.size()));
   for (int k = 0; k < nNeighbours; ++k) {
     ASSERT_LT(std::stoi(owners[k]), std::stoi(neighbours[k]));
-    if (k > 0 && owners[k] == owners[k - 1]) ASSERT_LT(std::stoi(neighbours[k - 1]), std::stoi(neighbours[k]));
+    if (k > 0 && owners[k] == owners[k - 1]) {
+      ASSERT_LT(std::stoi(neighbours[k - 1]), std::stoi(neighbours[k]));
+    }
   }
   const std::string boundaryFile = fileNamed(files, "boundary");
   foamList(boundaryFile, nPatches);

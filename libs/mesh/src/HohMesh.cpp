@@ -109,7 +109,8 @@ StructuredBlock hBlock(const std::string& name, double xBegin, double xEnd, bool
 // mesh exists, and saying so here is clearer (and cheaper) than the folded cells or the
 // diverging smoother it would otherwise end in.
 std::string outerLoopCrossing(const BladeShape& blade, const PassageBoundary& boundary,
-                              const std::vector<BladeNode>& wall) {
+                              const std::vector<BladeNode>& wall, bool& periodicCut) {
+  periodicCut = false;
   auto metres = [](double v) {
     char text[64];
     std::snprintf(text, sizeof text, "%.6g m", v);
@@ -121,10 +122,12 @@ std::string outerLoopCrossing(const BladeShape& blade, const PassageBoundary& bo
     const double x = node.point.x(), y = node.point.y();
     if (x <= boundary.inletInterfaceX() || x >= boundary.outletInterfaceX()) continue;
     const bool below = y <= boundary.lowerY(x), above = y >= boundary.upperY(x);
-    if (below || above)
+    if (below || above) {
+      periodicCut = true;
       return std::string("the ") + (below ? "lower" : "upper") +
              " periodic boundary cuts the blade at x = " + metres(x) +
              " (yIn, yOut or alphaCamber too far from the camber line for this pitch)";
+    }
   }
   // The interfaces against the profile itself (800 points), not the wall nodes: with few
   // nodes an interface could pass between two of them through the rounded edge.
@@ -236,18 +239,19 @@ void buildBlocks(HohMesh& result, const std::vector<BladeNode>& wall, const Oute
   result.valid = result.problem.empty();
 }
 
-}  // namespace
-
-HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
-                     const MeshingParameters& parameters, const HohMeshOptions& options) {
+// The mesh with the parameters as given, with the later tries of HohMeshOptions;
+// `periodicCut`: a periodic boundary cuts the blade (no passage: not smoothed, not moved).
+HohMesh meshWithTries(const BladeShape& blade, const PassageCondition& condition,
+                      const MeshingParameters& parameters, const HohMeshOptions& options,
+                      bool& periodicCut) {
   const int nT = parameters.nT;
-  if (nT < 8) throw std::invalid_argument("buildHohMesh: nT must be at least 8");
   HohMesh result;
+  result.parameters = parameters;
   result.nN = std::max(2, static_cast<int>(std::lround(static_cast<double>(condition.nO) / nT)));
   const PassageBoundary boundary(blade, condition, parameters);
 
   const auto wall = distributeBladeNodes(blade, nT, parameters.gammaLe, parameters.gammaTe);
-  result.problem = outerLoopCrossing(blade, boundary, wall);
+  result.problem = outerLoopCrossing(blade, boundary, wall, periodicCut);
   if (!result.problem.empty()) return result;
   int lowerIntervals = 0;
   while (wall[static_cast<std::size_t>(lowerIntervals)].side == BladeSide::lower) ++lowerIntervals;
@@ -287,6 +291,7 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
     if (outerRetry && wallRetry) add(true, true, "the wall and the outer loop");
     for (const Try& t : tries) {
       HohMesh candidate;
+      candidate.parameters = parameters;
       candidate.nN = result.nN;
       buildBlocks(candidate, wall, outer, boundary, condition, t.options);
       if (!candidate.valid) continue;
@@ -297,6 +302,81 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
     }
   }
   return result;
+}
+
+// `from` moved the fraction t of the way to `to` in the parameters that place the outer
+// loop (yIn, yOut, alphaCamber, betaIn, betaOut); the others as in `from`.
+MeshingParameters outerLoopMovedToward(const MeshingParameters& from, const MeshingParameters& to, double t) {
+  MeshingParameters p = from;
+  auto move = [t](double a, double b) { return a + t * (b - a); };
+  p.yIn = move(from.yIn, to.yIn);
+  p.yOut = move(from.yOut, to.yOut);
+  p.alphaCamber = move(from.alphaCamber, to.alphaCamber);
+  p.betaIn = move(from.betaIn, to.betaIn);
+  p.betaOut = move(from.betaOut, to.betaOut);
+  return p;
+}
+
+// "yIn 0.3 -> 0.21 m, betaIn 0.12 -> 0.2": the outer loop's parameters that differ.
+std::string outerLoopMoves(const MeshingParameters& from, const MeshingParameters& to) {
+  std::string text;
+  auto add = [&](const char* name, double a, double b, const char* unit) {
+    if (a == b) return;
+    char line[128];
+    std::snprintf(line, sizeof line, "%s%s %.6g -> %.6g%s", text.empty() ? "" : ", ", name, a, b, unit);
+    text += line;
+  };
+  add("yIn", from.yIn, to.yIn, " m");
+  add("yOut", from.yOut, to.yOut, " m");
+  add("alphaCamber", from.alphaCamber, to.alphaCamber, "");
+  add("betaIn", from.betaIn, to.betaIn, "");
+  add("betaOut", from.betaOut, to.betaOut, "");
+  return text;
+}
+
+}  // namespace
+
+HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
+                     const MeshingParameters& parameters, const HohMeshOptions& options) {
+  if (parameters.nT < 8) throw std::invalid_argument("buildHohMesh: nT must be at least 8");
+  bool periodicCut = false;
+  HohMesh result = meshWithTries(blade, condition, parameters, options, periodicCut);
+  if (result.valid || periodicCut || !(options.outerLoopRoom > 0)) return result;
+  // The outer loop moved away from the blade (HohMeshOptions::outerLoopRoom): the smallest
+  // move toward the target's loop that leaves the room (bisection on the fraction of the
+  // way; all the way when even the target's loop leaves less, but more than as asked).
+  const double chord = blade.parameters().chord, need = options.outerLoopRoom * chord;
+  MeshingParameters target = MeshingParameters::defaults(chord);
+  // The interfaces as far from the blade as the range box allows (betaIn, betaOut at
+  // their upper bound): the defaults' would bring an interface nearer when asked further.
+  target.betaIn = MeshingParameters::upperBounds(chord)[3];
+  target.betaOut = MeshingParameters::upperBounds(chord)[4];
+  auto room = [&](double t) {
+    return bladeClearance(blade, PassageBoundary(blade, condition, outerLoopMovedToward(parameters, target, t)));
+  };
+  const double before = room(0), atTarget = room(1);
+  // Room enough: the fold has another cause; or the target's loop leaves no more room.
+  if (!(before < need) || !(atTarget > before)) return result;
+  double low = 0, high = 1;
+  if (atTarget >= need)
+    for (int k = 0; k < 12; ++k) {
+      const double t = 0.5 * (low + high);
+      (room(t) >= need ? high : low) = t;
+    }
+  const MeshingParameters moved = outerLoopMovedToward(parameters, target, high);
+  bool movedCut = false;
+  HohMesh repaired = meshWithTries(blade, condition, moved, options, movedCut);
+  if (!repaired.valid) {
+    result.problem += "; with the outer loop moved away (" + outerLoopMoves(parameters, moved) +
+                      ") still invalid: " + repaired.problem;
+    return result;
+  }
+  char why[160];
+  std::snprintf(why, sizeof why, " (the blade came within %.3g chord of the outer loop; %.3g after the move)",
+                before / chord, room(high) / chord);
+  repaired.outerLoopMoved = outerLoopMoves(parameters, moved) + why;
+  repaired.firstTryProblem = result.problem;
+  return repaired;
 }
 
 }  // namespace passageMesh

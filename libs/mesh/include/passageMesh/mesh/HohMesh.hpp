@@ -18,7 +18,9 @@
 // the wall (LineRedistribution.hpp); where those rows fold, they are placed again with a
 // longer wall blend. Where that mesh is invalid, it is built again without the outer
 // loop's orthogonality control, then without the wall's (HohMeshOptions,
-// docs/elliptic-smoothing.md "Second try" and "Tries without the wall's orthogonality").
+// docs/elliptic-smoothing.md "Second try" and "Tries without the wall's orthogonality");
+// where every try is invalid and the outer loop runs close to the blade, the loop is moved
+// away and the mesh built once more (HohMeshOptions::outerLoopRoom).
 #include <string>
 
 #include "passageMesh/mesh/EllipticSmoother.hpp"
@@ -50,6 +52,16 @@ struct HohMeshOptions {
   bool secondTryWithoutOuterOrthogonality = true;
   // ... and this one the try without elliptic.wallOrthogonality (tried after the first).
   bool triesWithoutWallOrthogonality = true;
+  // Where every try is invalid and the blade comes within this many chords of the
+  // O-block's outer loop (but no periodic boundary cuts it: then no passage exists), the
+  // outer loop is moved away from the blade and the mesh built again: yIn, yOut,
+  // alphaCamber, betaIn and betaOut go the smallest fraction of the way toward the
+  // defaults' (betaIn, betaOut toward their upper bound) that leaves this much room (all
+  // the way when that loop leaves less, but more than the loop asked for; no move when it
+  // leaves no more). The moved mesh is kept only when valid (HohMesh::outerLoopMoved says
+  // how it was moved). A mesh valid with the parameters asked for is never changed.
+  // 0: never.
+  double outerLoopRoom = 0.1;
   EllipticOptions elliptic;
 };
 
@@ -59,8 +71,15 @@ struct HohMesh {
   bool valid = false;          // every cell of every block has positive area, convex corners
   std::string problem;         // why not valid (empty when valid)
   EllipticReport smoothing;    // sweeps, final residual, converged (sweeps 0: not smoothed)
-  // Non-empty when the mesh is a later try (HohMeshOptions): why the first, with every
-  // orthogonality control asked for, was invalid ...
+  // The meshing parameters the mesh was built with: those asked for, unless the outer
+  // loop was moved (outerLoopMoved).
+  MeshingParameters parameters;
+  // Non-empty when the outer loop was moved away from the blade (HohMeshOptions::
+  // outerLoopRoom): the parameters changed, old -> new, and the room before and after.
+  std::string outerLoopMoved;
+  // Non-empty when the mesh is a later try (HohMeshOptions) or its outer loop was moved:
+  // why the first, with the parameters asked for and every orthogonality control, was
+  // invalid ...
   std::string firstTryProblem;
   // ... and where the kept try drops the orthogonality: "the outer loop", "the wall" or
   // "the wall and the outer loop".
