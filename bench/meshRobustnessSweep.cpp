@@ -27,7 +27,7 @@ namespace {
 
 struct Outcome {
   bool valid = false, finite = true, converged = false;
-  bool moved = false;    // valid with the outer loop moved away from the blade (HohMeshOptions::outerLoopRoom)
+  bool moved = false;    // valid with moved parameters (HohMeshOptions::outerLoopRoom, clusteringMoves)
   int sweeps = 0;
   double seconds = 0;
   double clearance = 0;  // chords
@@ -56,10 +56,10 @@ int main(int argc, char** argv) {
     out.sweeps = hoh.smoothing.iterations;
     out.finite = hasOnlyFiniteCoordinates(hoh.mesh);
     if (hoh.valid) out.quality = computeMeshQuality(hoh.mesh).Q;
-    out.moved = !hoh.outerLoopMoved.empty();
+    out.moved = !hoh.parametersMoved.empty();
     out.problem = hoh.valid ? (hoh.retryWithout.empty() ? "" : "meshed without orthogonality at " + hoh.retryWithout)
                             : hoh.problem;
-    if (out.moved) out.problem += (out.problem.empty() ? "" : "; ") + ("outer loop moved: " + hoh.outerLoopMoved);
+    if (out.moved) out.problem += (out.problem.empty() ? "" : "; ") + ("moved: " + hoh.parametersMoved);
   });
   int valid = 0, notFinite = 0, notConverged = 0, moved = 0;
   double slowest = 0;
@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
     else if (b + 1 < bins) std::printf("  (%.2f, %.2f]: %d / %d\n", edges[b], edges[b + 1], ok, inBin);
     else std::printf("  > %.2f: %d / %d\n", edges[b], ok, inBin);
   }
-  std::printf("valid %d of %d (%.1f %%; %d of them with the outer loop moved); valid but not converged %d; "
+  std::printf("valid %d of %d (%.1f %%; %d of them with moved parameters); valid but not converged %d; "
               "non-finite %d; slowest %.2f s\n", valid, draws, 100.0 * valid / draws, moved, notConverged,
               notFinite, slowest);
   return notFinite == 0 ? 0 : 1;

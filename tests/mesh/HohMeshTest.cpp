@@ -148,8 +148,9 @@ TEST(HohMesh, SaysWhenAnInterfaceCutsTheBlade) {
   c = paperCondition(C);
   MeshingParameters m = MeshingParameters::defaults(C);
   m.betaIn = 0;
-  HohMeshOptions asked;  // no move of the outer loop (next test)
+  HohMeshOptions asked;  // no moved parameters (next tests)
   asked.outerLoopRoom = 0;
+  asked.clusteringMoves = false;
   hoh = buildHohMesh(blade, c, m, asked);
   EXPECT_FALSE(hoh.valid);
   EXPECT_NE(hoh.problem.find("the inlet interface (x = "), std::string::npos) << hoh.problem;
@@ -168,13 +169,14 @@ TEST(HohMesh, MovesTheOuterLoopAwayWhereItLeavesTooLittleRoom) {
   m.nT = 200;
   HohMeshOptions asked;
   asked.outerLoopRoom = 0;
+  asked.clusteringMoves = false;
   const HohMesh cut = buildHohMesh(blade, c, m, asked);
   ASSERT_FALSE(cut.valid);
 
   const HohMesh hoh = buildHohMesh(blade, c, m);
   ASSERT_TRUE(hoh.valid) << hoh.problem;
   EXPECT_EQ(hoh.firstTryProblem, cut.problem);
-  EXPECT_EQ(hoh.outerLoopMoved.find("betaIn 0 -> "), 0u) << hoh.outerLoopMoved;
+  EXPECT_EQ(hoh.parametersMoved.find("betaIn 0 -> "), 0u) << hoh.parametersMoved;
   EXPECT_GT(hoh.parameters.betaIn, 0.0);
   EXPECT_LT(hoh.parameters.betaIn, MeshingParameters::upperBounds(C)[3]);
   // Just far enough: the room asked for, to the bisection's resolution.
@@ -189,9 +191,33 @@ TEST(HohMesh, MovesTheOuterLoopAwayWhereItLeavesTooLittleRoom) {
   const MeshingParameters defaults = MeshingParameters::defaults(C);
   const HohMesh asIs = buildHohMesh(blade, c, defaults);
   ASSERT_TRUE(asIs.valid);
-  EXPECT_TRUE(asIs.outerLoopMoved.empty());
+  EXPECT_TRUE(asIs.parametersMoved.empty());
   EXPECT_TRUE(asIs.firstTryProblem.empty());
   EXPECT_EQ(asIs.parameters.toArray(), defaults.toArray());
+}
+
+// Draw 389 of the robustness sweep (seed 20261122; nT 163, gammaLE 0.90, gammaTE 0.58):
+// the smoothed lines fold at the trailing edge, also with the outer loop moved to 0.1
+// chord of room; with the node clustering moved halfway to the defaults' on top, it meshes.
+TEST(HohMesh, MovesTheNodeClusteringTowardTheDefaultsWhereTheEdgesFold) {
+  const PassageDraw d = samplePassages(500, 20261122)[389];
+  const BladeShape blade(d.blade);
+  HohMeshOptions without;
+  without.clusteringMoves = false;
+  const HohMesh folded = buildHohMesh(blade, d.condition, d.parameters, without);
+  ASSERT_FALSE(folded.valid);
+  EXPECT_NE(folded.problem.find("still invalid"), std::string::npos) << folded.problem;  // the outer loop's move
+
+  const HohMesh hoh = buildHohMesh(blade, d.condition, d.parameters);
+  ASSERT_TRUE(hoh.valid) << hoh.problem;
+  const MeshingParameters defaults = MeshingParameters::defaults(d.blade.chord);
+  EXPECT_DOUBLE_EQ(hoh.parameters.gammaLe, 0.5 * (d.parameters.gammaLe + defaults.gammaLe));
+  EXPECT_DOUBLE_EQ(hoh.parameters.gammaTe, 0.5 * (d.parameters.gammaTe + defaults.gammaTe));
+  EXPECT_EQ(hoh.parameters.nT, d.parameters.nT);
+  EXPECT_NE(hoh.parametersMoved.find("gammaTE "), std::string::npos) << hoh.parametersMoved;
+  EXPECT_NE(hoh.parametersMoved.find("node clustering halfway to the defaults'"), std::string::npos)
+      << hoh.parametersMoved;
+  EXPECT_EQ(hoh.firstTryProblem.find("the smoothed lines fold"), 0u) << hoh.firstTryProblem;
 }
 
 // Draw 475 of the robustness sweep (seed 20261122; clearance 0.06 chord): the wall's
@@ -204,6 +230,7 @@ TEST(HohMesh, TriesWithoutTheWallsOrthogonalityWhereTheLinesFold) {
   HohMeshOptions without;
   without.triesWithoutWallOrthogonality = false;
   without.outerLoopRoom = 0;  // (with 0.06 chord of room, moving the loop meshes it too)
+  without.clusteringMoves = false;
   const HohMesh folded = buildHohMesh(blade, d.condition, d.parameters, without);
   ASSERT_FALSE(folded.valid);
   EXPECT_NE(folded.problem.find("fold"), std::string::npos) << folded.problem;

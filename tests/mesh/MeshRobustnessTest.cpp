@@ -57,10 +57,10 @@ TEST(MeshRobustness, EveryRandomPassageEndsAsAValidMeshOrWithItsReason) {
   // 51 of these 500 were valid when this test was written, 72 since the second try
   // without outer orthogonality, 84 since the wall blend in log distance, 88 since the
   // control grid resampled in the loop index, 94 since the tries without the wall's
-  // orthogonality, 126 since the outer loop is moved away where it leaves the blade too
-  // little room (docs/benchmarks.md); fewer means the mesher got less robust. Raise the
-  // floor when it gets better.
-  EXPECT_GE(valid.load(), 123) << "valid meshes among " << draws << " random passages";
+  // orthogonality, 130 since the outer loop is moved away where it leaves the blade too
+  // little room and the node clustering toward the defaults' (docs/benchmarks.md); fewer
+  // means the mesher got less robust. Raise the floor when it gets better.
+  EXPECT_GE(valid.load(), 127) << "valid meshes among " << draws << " random passages";
   std::printf("valid %d of %d random passages\n", valid.load(), draws);
 }
 

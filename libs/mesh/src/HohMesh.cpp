@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "passageMesh/mesh/BladeNodes.hpp"
@@ -317,8 +318,8 @@ MeshingParameters outerLoopMovedToward(const MeshingParameters& from, const Mesh
   return p;
 }
 
-// "yIn 0.3 -> 0.21 m, betaIn 0.12 -> 0.2": the outer loop's parameters that differ.
-std::string outerLoopMoves(const MeshingParameters& from, const MeshingParameters& to) {
+// "yIn 0.3 -> 0.21 m, gammaTE 0.5 -> 1.75": the parameters that differ.
+std::string parameterMoves(const MeshingParameters& from, const MeshingParameters& to) {
   std::string text;
   auto add = [&](const char* name, double a, double b, const char* unit) {
     if (a == b) return;
@@ -331,21 +332,21 @@ std::string outerLoopMoves(const MeshingParameters& from, const MeshingParameter
   add("alphaCamber", from.alphaCamber, to.alphaCamber, "");
   add("betaIn", from.betaIn, to.betaIn, "");
   add("betaOut", from.betaOut, to.betaOut, "");
+  add("gammaLE", from.gammaLe, to.gammaLe, "");
+  add("gammaTE", from.gammaTe, to.gammaTe, "");
   return text;
 }
 
-}  // namespace
-
-HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
-                     const MeshingParameters& parameters, const HohMeshOptions& options) {
-  if (parameters.nT < 8) throw std::invalid_argument("buildHohMesh: nT must be at least 8");
-  bool periodicCut = false;
-  HohMesh result = meshWithTries(blade, condition, parameters, options, periodicCut);
-  if (result.valid || periodicCut || !(options.outerLoopRoom > 0)) return result;
-  // The outer loop moved away from the blade (HohMeshOptions::outerLoopRoom): the smallest
-  // move toward the target's loop that leaves the room (bisection on the fraction of the
-  // way; all the way when even the target's loop leaves less, but more than as asked).
-  const double chord = blade.parameters().chord, need = options.outerLoopRoom * chord;
+// The outer loop moved away from the blade so that it leaves `need` [m] of room
+// (HohMeshOptions::outerLoopRoom): the smallest move toward the target's loop that does
+// (bisection on the fraction of the way; all the way when even the target's loop leaves
+// less, but more than as asked). Empty when the loop as asked leaves the room (the fold
+// has another cause) or the target's loop leaves no more; `why` says how much room
+// before and after.
+std::optional<MeshingParameters> outerLoopWithRoom(const BladeShape& blade, const PassageCondition& condition,
+                                                   const MeshingParameters& parameters, double need,
+                                                   std::string& why) {
+  const double chord = blade.parameters().chord;
   MeshingParameters target = MeshingParameters::defaults(chord);
   // The interfaces as far from the blade as the range box allows (betaIn, betaOut at
   // their upper bound): the defaults' would bring an interface nearer when asked further.
@@ -355,28 +356,65 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
     return bladeClearance(blade, PassageBoundary(blade, condition, outerLoopMovedToward(parameters, target, t)));
   };
   const double before = room(0), atTarget = room(1);
-  // Room enough: the fold has another cause; or the target's loop leaves no more room.
-  if (!(before < need) || !(atTarget > before)) return result;
+  if (!(before < need) || !(atTarget > before)) return std::nullopt;
   double low = 0, high = 1;
   if (atTarget >= need)
     for (int k = 0; k < 12; ++k) {
       const double t = 0.5 * (low + high);
       (room(t) >= need ? high : low) = t;
     }
-  const MeshingParameters moved = outerLoopMovedToward(parameters, target, high);
-  bool movedCut = false;
-  HohMesh repaired = meshWithTries(blade, condition, moved, options, movedCut);
-  if (!repaired.valid) {
-    result.problem += "; with the outer loop moved away (" + outerLoopMoves(parameters, moved) +
-                      ") still invalid: " + repaired.problem;
-    return result;
-  }
-  char why[160];
-  std::snprintf(why, sizeof why, " (the blade came within %.3g chord of the outer loop; %.3g after the move)",
+  char text[160];
+  std::snprintf(text, sizeof text, "the blade came within %.3g chord of the outer loop; %.3g after the move",
                 before / chord, room(high) / chord);
-  repaired.outerLoopMoved = outerLoopMoves(parameters, moved) + why;
-  repaired.firstTryProblem = result.problem;
-  return repaired;
+  why = text;
+  return outerLoopMovedToward(parameters, target, high);
+}
+
+}  // namespace
+
+HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
+                     const MeshingParameters& parameters, const HohMeshOptions& options) {
+  if (parameters.nT < 8) throw std::invalid_argument("buildHohMesh: nT must be at least 8");
+  bool periodicCut = false;
+  HohMesh first = meshWithTries(blade, condition, parameters, options, periodicCut);
+  if (first.valid || periodicCut) return first;
+  // Meshes with moved parameters (HohMeshOptions::outerLoopRoom, clusteringMoves), each
+  // move on top of the ones before; the first valid one is kept.
+  MeshingParameters p = parameters;
+  std::string reasons, failures;
+  auto attempt = [&](const MeshingParameters& moved, const std::string& reason) {
+    bool cut = false;
+    HohMesh m = meshWithTries(blade, condition, moved, options, cut);
+    const std::string why = reasons + (reasons.empty() || reason.empty() ? "" : "; ") + reason;
+    if (m.valid) {
+      m.parametersMoved = parameterMoves(parameters, moved) + " (" + why + ")";
+      m.firstTryProblem = first.problem;
+      return std::optional<HohMesh>(std::move(m));
+    }
+    failures += "; with " + parameterMoves(parameters, moved) + " still invalid: " + m.problem;
+    return std::optional<HohMesh>();
+  };
+  if (options.outerLoopRoom > 0) {
+    std::string why;
+    if (const auto moved = outerLoopWithRoom(blade, condition, p, options.outerLoopRoom * blade.parameters().chord, why)) {
+      if (auto m = attempt(*moved, why)) return std::move(*m);
+      p = *moved;
+      reasons = why;
+    }
+  }
+  if (options.clusteringMoves) {
+    const MeshingParameters defaults = MeshingParameters::defaults(blade.parameters().chord);
+    for (double t : {0.5, 1.0}) {
+      MeshingParameters q = p;
+      q.gammaLe = p.gammaLe + t * (defaults.gammaLe - p.gammaLe);
+      q.gammaTe = p.gammaTe + t * (defaults.gammaTe - p.gammaTe);
+      if (q.gammaLe == p.gammaLe && q.gammaTe == p.gammaTe) break;
+      if (auto m = attempt(q, t < 1 ? "node clustering halfway to the defaults'" : "the defaults' node clustering"))
+        return std::move(*m);
+    }
+  }
+  first.problem += failures;
+  return first;
 }
 
 }  // namespace passageMesh

@@ -24,15 +24,15 @@ HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& 
   else  // refused before smoothing (a boundary through the blade, an impossible clustering),
         // or too few rows to smooth
     std::printf("%s: O-block %d x %d nodes; not smoothed\n", tool.c_str(), parameters.nT, hoh.nN);
-  if (!hoh.outerLoopMoved.empty())
-    std::printf("  Warning: the mesh with the meshDict's parameters was invalid (%s); built with the "
-                "outer loop moved away from the blade: %s\n",
-                hoh.firstTryProblem.c_str(), hoh.outerLoopMoved.c_str());
+  if (!hoh.parametersMoved.empty())
+    std::printf("  Warning: the mesh with the meshDict's parameters was invalid (%s); built with "
+                "them moved: %s\n",
+                hoh.firstTryProblem.c_str(), hoh.parametersMoved.c_str());
   if (!hoh.retryWithout.empty())
     std::printf("  meshed by a later try, without orthogonality at %s%s%s%s\n", hoh.retryWithout.c_str(),
-                hoh.outerLoopMoved.empty() ? ": the first was invalid (" : "",
-                hoh.outerLoopMoved.empty() ? hoh.firstTryProblem.c_str() : "",
-                hoh.outerLoopMoved.empty() ? ")" : "");
+                hoh.parametersMoved.empty() ? ": the first was invalid (" : "",
+                hoh.parametersMoved.empty() ? hoh.firstTryProblem.c_str() : "",
+                hoh.parametersMoved.empty() ? ")" : "");
   if (hoh.valid && hoh.wallBlendLength > HohMeshOptions{}.wallBlendLength)
     std::printf("  rows placed with a wall blend of %g wall spacings: they folded with %g\n",
                 hoh.wallBlendLength, HohMeshOptions{}.wallBlendLength);

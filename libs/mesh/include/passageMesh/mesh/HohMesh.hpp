@@ -19,8 +19,9 @@
 // longer wall blend. Where that mesh is invalid, it is built again without the outer
 // loop's orthogonality control, then without the wall's (HohMeshOptions,
 // docs/elliptic-smoothing.md "Second try" and "Tries without the wall's orthogonality");
-// where every try is invalid and the outer loop runs close to the blade, the loop is moved
-// away and the mesh built once more (HohMeshOptions::outerLoopRoom).
+// where every try is invalid, the outer loop is moved away from a blade it runs close to,
+// then the node clustering toward the defaults' (HohMeshOptions::outerLoopRoom,
+// clusteringMoves).
 #include <string>
 
 #include "passageMesh/mesh/EllipticSmoother.hpp"
@@ -52,16 +53,19 @@ struct HohMeshOptions {
   bool secondTryWithoutOuterOrthogonality = true;
   // ... and this one the try without elliptic.wallOrthogonality (tried after the first).
   bool triesWithoutWallOrthogonality = true;
-  // Where every try is invalid and the blade comes within this many chords of the
-  // O-block's outer loop (but no periodic boundary cuts it: then no passage exists), the
-  // outer loop is moved away from the blade and the mesh built again: yIn, yOut,
-  // alphaCamber, betaIn and betaOut go the smallest fraction of the way toward the
-  // defaults' (betaIn, betaOut toward their upper bound) that leaves this much room (all
-  // the way when that loop leaves less, but more than the loop asked for; no move when it
-  // leaves no more). The moved mesh is kept only when valid (HohMesh::outerLoopMoved says
-  // how it was moved). A mesh valid with the parameters asked for is never changed.
-  // 0: never.
+  // Where every try is invalid, the mesh is built again with moved meshing parameters,
+  // each move on top of the one before, and the first valid one is kept
+  // (HohMesh::parametersMoved says what moved and why); a mesh valid with the parameters
+  // asked for is never changed, and a passage cut by a periodic boundary (no passage
+  // exists) is not moved. First, where the blade comes within this many chords of the
+  // O-block's outer loop, the loop is moved away: yIn, yOut, alphaCamber toward the
+  // defaults', betaIn, betaOut toward their upper bound, the smallest common fraction of
+  // the way that leaves this much room (all the way when that loop leaves less, but more
+  // than the loop asked for; no move when it leaves no more). 0: never.
   double outerLoopRoom = 0.1;
+  // Then gammaLE and gammaTE halfway to the defaults', then to them: the wall nodes
+  // clustered enough at the edges for their curvature.
+  bool clusteringMoves = true;
   EllipticOptions elliptic;
 };
 
@@ -71,13 +75,13 @@ struct HohMesh {
   bool valid = false;          // every cell of every block has positive area, convex corners
   std::string problem;         // why not valid (empty when valid)
   EllipticReport smoothing;    // sweeps, final residual, converged (sweeps 0: not smoothed)
-  // The meshing parameters the mesh was built with: those asked for, unless the outer
-  // loop was moved (outerLoopMoved).
+  // The meshing parameters the mesh was built with: those asked for, unless moved
+  // (parametersMoved).
   MeshingParameters parameters;
-  // Non-empty when the outer loop was moved away from the blade (HohMeshOptions::
-  // outerLoopRoom): the parameters changed, old -> new, and the room before and after.
-  std::string outerLoopMoved;
-  // Non-empty when the mesh is a later try (HohMeshOptions) or its outer loop was moved:
+  // Non-empty when the parameters were moved to mesh the passage (HohMeshOptions::
+  // outerLoopRoom, clusteringMoves): each one changed, old -> new, and why.
+  std::string parametersMoved;
+  // Non-empty when the mesh is a later try (HohMeshOptions) or its parameters were moved:
   // why the first, with the parameters asked for and every orthogonality control, was
   // invalid ...
   std::string firstTryProblem;
