@@ -178,7 +178,7 @@ TEST(HohMesh, MovesTheOuterLoopAwayWhereItLeavesTooLittleRoom) {
   EXPECT_EQ(hoh.firstTryProblem, cut.problem);
   EXPECT_EQ(hoh.parametersMoved.find("betaIn 0 -> "), 0u) << hoh.parametersMoved;
   EXPECT_GT(hoh.parameters.betaIn, 0.0);
-  EXPECT_LT(hoh.parameters.betaIn, MeshingParameters::upperBounds(C)[3]);
+  EXPECT_LT(hoh.parameters.betaIn, MeshingParameters::fromArray(MeshingParameters::upperBounds(C)).betaIn);
   // Just far enough: the room asked for, to the bisection's resolution.
   const double room = bladeClearance(blade, PassageBoundary(blade, c, hoh.parameters)) / C;
   EXPECT_GE(room, HohMeshOptions{}.outerLoopRoom);

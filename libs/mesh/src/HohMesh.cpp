@@ -350,8 +350,9 @@ std::optional<MeshingParameters> outerLoopWithRoom(const BladeShape& blade, cons
   MeshingParameters target = MeshingParameters::defaults(chord);
   // The interfaces as far from the blade as the range box allows (betaIn, betaOut at
   // their upper bound): the defaults' would bring an interface nearer when asked further.
-  target.betaIn = MeshingParameters::upperBounds(chord)[3];
-  target.betaOut = MeshingParameters::upperBounds(chord)[4];
+  const MeshingParameters upper = MeshingParameters::fromArray(MeshingParameters::upperBounds(chord));
+  target.betaIn = upper.betaIn;
+  target.betaOut = upper.betaOut;
   auto room = [&](double t) {
     return bladeClearance(blade, PassageBoundary(blade, condition, outerLoopMovedToward(parameters, target, t)));
   };
