@@ -19,6 +19,8 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   o.searchEvery = 640;
   o.searchBudget = 96;
   o.imitationWeight = 0.25;
+  o.wideNoiseShare = 0.1;
+  o.wideNoiseSigma = 0.4;
   const auto file = testData::writeTempFile("policyTrainDict", "dict.xml", policyTrainDictXml(o));
   const PolicyTrainOptions back = readPolicyTrainDict(file);
   EXPECT_EQ(policyTrainDictXml(back), policyTrainDictXml(o));
@@ -29,6 +31,8 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   EXPECT_EQ(back.searchEvery, 640);
   EXPECT_EQ(back.searchBudget, 96);
   EXPECT_EQ(back.imitationWeight, 0.25);
+  EXPECT_EQ(back.wideNoiseShare, 0.1);
+  EXPECT_EQ(back.wideNoiseSigma, 0.4);
   EXPECT_EQ(readPolicyTrainDict(file.parent_path() / "missing.xml").episodes, PolicyTrainOptions{}.episodes);
 }
 
@@ -68,6 +72,9 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
             std::string::npos) << bad("<imitationWeight>1</imitationWeight>");
   EXPECT_EQ(bad("<searchEvery>64</searchEvery>\n<imitationWeight>1</imitationWeight>"), "accepted");
   EXPECT_NE(bad("<searchBudget>1</searchBudget>").find("must be in [2,"), std::string::npos);
+  EXPECT_NE(bad("<wideNoiseShare>1.5</wideNoiseShare>").find("bad.xml:2: <wideNoiseShare> is a share of the episodes"),
+            std::string::npos) << bad("<wideNoiseShare>1.5</wideNoiseShare>");
+  EXPECT_NE(bad("<wideNoiseSigma>0</wideNoiseSigma>").find("bad.xml:2:"), std::string::npos);
   EXPECT_NE(bad("<epsiodes>10</epsiodes>").find("epsiodes"), std::string::npos);
   EXPECT_NE(bad("<batchEpisodes>3000000000</batchEpisodes>").find("must be in [1, 2147483647]"), std::string::npos);
   EXPECT_NE(bad("<minibatch>200</minibatch><bufferCapacity>100</bufferCapacity>").find("never start"),

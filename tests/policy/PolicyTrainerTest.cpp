@@ -250,6 +250,39 @@ TEST(PolicyTrainer, SearchesFeedTheBufferAndLeaveDemonstrationsAtLeastAsGoodAsTh
   EXPECT_EQ(plain.demonstrations().size(), 0);
 }
 
+// wideNoiseShare: that share of the episodes explores with wideNoiseSigma. One batch (one
+// actor snapshot) without schedule noise: an episode's action, and so its reward, differs
+// from the noise-free run's exactly where it drew the wide noise; with share 0 nothing is
+// drawn and wideNoiseSigma changes nothing.
+TEST(PolicyTrainer, AShareOfTheEpisodesExploresWithTheWideNoise) {
+  const ToyEnvironment toy(24, 8, 3);
+  ThreadRollouts rollouts(1);
+  PolicyTrainOptions o = smallRun(64);
+  o.batchEpisodes = 64;
+  o.noiseStartSigma = 0;
+  o.noiseAmplitude = 0;
+  auto rewardsOf = [&](double share, double sigma) {
+    PolicyTrainOptions run = o;
+    run.wideNoiseShare = share;
+    run.wideNoiseSigma = sigma;
+    PolicyTrainer trainer(run, toy, rollouts);
+    EXPECT_TRUE(trainer.run(nullptr, {}));
+    return trainer.recentRewards(64);
+  };
+  const std::vector<double> quiet = rewardsOf(0, 0.5), otherSigma = rewardsOf(0, 0.9);
+  EXPECT_EQ(quiet, otherSigma);
+  const std::vector<double> half = rewardsOf(0.5, 0.5), all = rewardsOf(1, 0.5);
+  ASSERT_EQ(half.size(), 64u);
+  int differ = 0, allDiffer = 0;
+  for (std::size_t i = 0; i < 64; ++i) {
+    differ += half[i] != quiet[i];
+    allDiffer += all[i] != quiet[i];
+  }
+  EXPECT_EQ(allDiffer, 64);
+  EXPECT_GE(differ, 16);  // binomial(64, 0.5): 32 +- 4
+  EXPECT_LE(differ, 48);
+}
+
 // -startFrom: another run's checkpoint (other seed, other settings) carries on under this
 // run's settings; a plain resume of the same file is refused.
 TEST(PolicyTrainer, StartingFromAnotherRunsCheckpointKeepsItsWeightsAndEpisodes) {

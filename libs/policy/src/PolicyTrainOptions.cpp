@@ -172,6 +172,10 @@ const std::vector<Key>& keys() {
       {"noiseAmplitude", readPositive("noiseAmplitude", [](O& o) -> double& { return o.noiseAmplitude; }, true),
        [](const O& o) { return exact(o.noiseAmplitude); }},
       {"noisePeriod", readInteger("noisePeriod", &O::noisePeriod, 1), [](const O& o) { return std::to_string(o.noisePeriod); }},
+      {"wideNoiseShare", readPositive("wideNoiseShare", [](O& o) -> double& { return o.wideNoiseShare; }, true),
+       [](const O& o) { return exact(o.wideNoiseShare); }},
+      {"wideNoiseSigma", readPositive("wideNoiseSigma", [](O& o) -> double& { return o.wideNoiseSigma; }, false),
+       [](const O& o) { return exact(o.wideNoiseSigma); }},
       {"bufferCapacity", readInteger("bufferCapacity", &O::bufferCapacity, 1), [](const O& o) { return std::to_string(o.bufferCapacity); }},
       {"validationEvery", readInteger("validationEvery", &O::validationEvery, 1), [](const O& o) { return std::to_string(o.validationEvery); }},
       {"validationPassages", readInteger("validationPassages", &O::validationPassages, 0), [](const O& o) { return std::to_string(o.validationPassages); }},
@@ -215,6 +219,10 @@ PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file) {
     throw InputError(file.string(), dict.line("imitationWeight"),
                      "<imitationWeight> needs <searchEvery> above 0: without searches there are no "
                      "demonstrations to imitate");
+  if (options.wideNoiseShare > 1)
+    throw InputError(file.string(), dict.line("wideNoiseShare"),
+                     "<wideNoiseShare> is a share of the episodes: expected a value in [0, 1], got " +
+                         exact(options.wideNoiseShare));
   if (options.minibatch > options.bufferCapacity)
     throw InputError(file.string(), dict.line(dict.has("minibatch") ? "minibatch" : "bufferCapacity"),
                      "<minibatch> " + std::to_string(options.minibatch) + " is larger than <bufferCapacity> " +

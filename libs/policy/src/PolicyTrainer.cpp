@@ -211,7 +211,10 @@ void PolicyTrainer::runBatch() {
   PolicyBatch actions = learner_.act(statesOf(tasks, environment_.stateSize()));
   for (int i = 0; i < count; ++i) {
     std::mt19937_64 noise = episodeRandom(options_.seed, static_cast<std::uint64_t>(first + i), noiseStream);
-    const double sigma = options_.noiseSigma(first + i);
+    double sigma = options_.noiseSigma(first + i);
+    // (drawn only when asked for, so that runs without wide episodes keep their noise)
+    if (options_.wideNoiseShare > 0 && uniform01(noise) < options_.wideNoiseShare)
+      sigma = options_.wideNoiseSigma;
     for (int k = 0; k < actions.cols(); ++k)
       actions(i, k) = std::clamp(actions(i, k) + sigma * standardNormal(noise), -1.0, 1.0);
   }

@@ -39,6 +39,12 @@ struct PolicyTrainOptions {
   long noiseStartEpisodes = 1000;
   double noiseAmplitude = 0.25;
   long noisePeriod = 1000;
+  // This share of the episodes (drawn per episode from its noise stream) explores with
+  // sigma = wideNoiseSigma instead of the schedule's: far from the actor's action, where
+  // the critic has seen nothing, while the other episodes keep the data near it (0: none,
+  // the paper's; docs/policy.md).
+  double wideNoiseShare = 0;
+  double wideNoiseSigma = 0.5;
   long bufferCapacity = 1000000;  // replay buffer episodes (the newest kept)
   long validationEvery = 5000;    // episodes between validations (noise-free policy)
   int validationPassages = 50;    // fixed sampler passages of the validation set
