@@ -318,22 +318,19 @@ MeshingParameters outerLoopMovedToward(const MeshingParameters& from, const Mesh
   return p;
 }
 
-// "yIn 0.3 -> 0.21 m, gammaTE 0.5 -> 1.75": the parameters that differ.
+// "yIn 0.3 -> 0.21 m, gammaTE 0.5 -> 1.75": the parameters that differ, by the parameter
+// table's names (lengths in metres).
 std::string parameterMoves(const MeshingParameters& from, const MeshingParameters& to) {
+  const auto& table = MeshingParameters::table();
+  const auto a = from.toArray(), b = to.toArray();
   std::string text;
-  auto add = [&](const char* name, double a, double b, const char* unit) {
-    if (a == b) return;
+  for (int k = 0; k < MeshingParameters::size; ++k) {
+    if (a[k] == b[k]) continue;
     char line[128];
-    std::snprintf(line, sizeof line, "%s%s %.6g -> %.6g%s", text.empty() ? "" : ", ", name, a, b, unit);
+    std::snprintf(line, sizeof line, "%s%s %.6g -> %.6g%s", text.empty() ? "" : ", ", table[k].name, a[k], b[k],
+                  table[k].length ? " m" : "");
     text += line;
-  };
-  add("yIn", from.yIn, to.yIn, " m");
-  add("yOut", from.yOut, to.yOut, " m");
-  add("alphaCamber", from.alphaCamber, to.alphaCamber, "");
-  add("betaIn", from.betaIn, to.betaIn, "");
-  add("betaOut", from.betaOut, to.betaOut, "");
-  add("gammaLE", from.gammaLe, to.gammaLe, "");
-  add("gammaTE", from.gammaTe, to.gammaTe, "");
+  }
   return text;
 }
 
@@ -358,15 +355,20 @@ std::optional<MeshingParameters> outerLoopWithRoom(const BladeShape& blade, cons
   };
   const double before = room(0), atTarget = room(1);
   if (!(before < need) || !(atTarget > before)) return std::nullopt;
-  double low = 0, high = 1;
+  double low = 0, high = 1, after = atTarget;  // after: the room at `high`
   if (atTarget >= need)
     for (int k = 0; k < 12; ++k) {
-      const double t = 0.5 * (low + high);
-      (room(t) >= need ? high : low) = t;
+      const double t = 0.5 * (low + high), r = room(t);
+      if (r >= need) {
+        high = t;
+        after = r;
+      } else {
+        low = t;
+      }
     }
   char text[160];
   std::snprintf(text, sizeof text, "the blade came within %.3g chord of the outer loop; %.3g after the move",
-                before / chord, room(high) / chord);
+                before / chord, after / chord);
   why = text;
   return outerLoopMovedToward(parameters, target, high);
 }
