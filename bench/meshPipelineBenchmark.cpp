@@ -14,7 +14,8 @@
 //       one line: a hash of every node coordinate's bits and of Q of the tutorials' meshes
 //       and of the sampler passages' (defaults), then how many were valid. A change meant
 //       to leave the meshes bit for bit as they were (a faster solver, a split of code)
-//       must leave the line as it was.
+//       must leave the line as it was. With a fourth argument `list`, each mesh's Q too
+//       (%.9f, -1 invalid), one a line, to compare two builds mesh by mesh.
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -123,13 +124,14 @@ struct Digest {
   }
 };
 
-int digest(int passages, std::uint64_t seed) {
+int digest(int passages, std::uint64_t seed, bool list) {
   MeshQualityWorkspace workspace;
   Digest d;
   int meshes = 0, valid = 0;
   auto add = [&](const BladeShape& blade, const PassageCondition& condition, double chord) {
     const CheckedMesh m = checkedMesh(blade, condition, MeshingParameters::defaults(chord), workspace);
     d.add(m);
+    if (list) std::printf("mesh %d Q %.9f\n", meshes, m.quality.Q);
     ++meshes;
     valid += m.hoh.valid ? 1 : 0;
   };
@@ -147,7 +149,8 @@ int digest(int passages, std::uint64_t seed) {
 int main(int argc, char** argv) {
   if (argc > 1 && std::strcmp(argv[1], "digest") == 0)
     return digest(argc > 2 ? std::max(0, std::atoi(argv[2])) : 50,
-                  argc > 3 ? std::strtoull(argv[3], nullptr, 10) : 20261203);
+                  argc > 3 ? std::strtoull(argv[3], nullptr, 10) : 20261203,
+                  argc > 4 && std::strcmp(argv[4], "list") == 0);
   if (argc > 1 && std::strcmp(argv[1], "sampler") == 0)
     return sampled(argc > 2 ? std::max(1, std::atoi(argv[2])) : 200,
                    argc > 3 ? std::strtoull(argv[3], nullptr, 10) : 20261203);

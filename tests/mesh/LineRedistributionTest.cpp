@@ -54,3 +54,33 @@ TEST(LineRedistribution, MismatchedBlocksAreRefused) {
   StructuredBlock target = annulus(17, 20);
   EXPECT_THROW(redistributeAlongLines(lines, target, 1e-3), std::invalid_argument);
 }
+
+// HohMesh's wall-angle limit: row 1 alone along the given directions, firstSpacing out;
+// every other row where it is without them.
+TEST(LineRedistribution, TheFirstRowAloneFollowsItsOwnDirections) {
+  const int n = 32;
+  const StructuredBlock lines = annulus(n, 9);
+  StructuredBlock plain = annulus(n, 30), turned = annulus(n, 30);
+  const double first = 1e-3, tilt = 0.1;  // [rad]
+  std::vector<Eigen::Vector2d> normals, firstRow;
+  for (int i = 0; i < n; ++i) {
+    const double a = std::atan2(lines.yAt(i, 0), lines.xAt(i, 0));
+    normals.emplace_back(std::cos(a), std::sin(a));
+    firstRow.emplace_back(std::cos(a + tilt), std::sin(a + tilt));
+  }
+  redistributeAlongLines(lines, plain, first, normals);
+  redistributeAlongLines(lines, turned, first, normals, 3.0, firstRow);
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d wall(lines.xAt(i, 0), lines.yAt(i, 0));
+    const Eigen::Vector2d expected = wall + first * firstRow[static_cast<std::size_t>(i)];
+    EXPECT_NEAR(turned.xAt(i, 1), expected.x(), 1e-15) << i;
+    EXPECT_NEAR(turned.yAt(i, 1), expected.y(), 1e-15) << i;
+    for (int j = 0; j < turned.nj; ++j) {
+      if (j == 1) continue;
+      EXPECT_EQ(turned.xAt(i, j), plain.xAt(i, j)) << i << " " << j;
+      EXPECT_EQ(turned.yAt(i, j), plain.yAt(i, j)) << i << " " << j;
+    }
+  }
+  firstRow.pop_back();
+  EXPECT_THROW(redistributeAlongLines(lines, turned, first, normals, 3.0, firstRow), std::invalid_argument);
+}

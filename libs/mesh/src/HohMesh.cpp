@@ -71,6 +71,27 @@ std::vector<Eigen::Vector2d> lineDirections(const std::vector<BladeNode>& wall, 
   return direction;
 }
 
+// Each direction turned back to within `limitDegrees` of the normal of the discrete wall
+// (the chord between node i's neighbours turned by +90 degrees: outward for i clockwise
+// around the blade, as MeshStatistics measures it), where it leans further.
+std::vector<Eigen::Vector2d> limitedToWallAngle(std::vector<Eigen::Vector2d> direction,
+                                                const std::vector<BladeNode>& wall, double limitDegrees) {
+  if (limitDegrees <= 0) return direction;
+  const int nT = static_cast<int>(wall.size());
+  const double limit = limitDegrees * M_PI / 180;
+  for (int i = 0; i < nT; ++i) {
+    const Eigen::Vector2d tangent = (wall[(i + 1) % nT].point - wall[(i + nT - 1) % nT].point).normalized();
+    const Eigen::Vector2d normal(-tangent.y(), tangent.x());
+    const Eigen::Vector2d& d = direction[i];
+    const double angle = std::atan2(normal.x() * d.y() - normal.y() * d.x(), normal.dot(d));
+    if (std::abs(angle) <= limit) continue;
+    const double a = std::copysign(limit, angle);
+    direction[i] = Eigen::Vector2d(std::cos(a) * normal.x() - std::sin(a) * normal.y(),
+                                   std::sin(a) * normal.x() + std::cos(a) * normal.y());
+  }
+  return direction;
+}
+
 // The O-block the elliptic equations are solved on: `rows` rows evenly spaced along
 // lines from the wall nodes to the outer loop's nodes, the seam column repeated.
 StructuredBlock algebraicOBlock(const std::vector<BladeNode>& wall, const OuterLoop& outer, int rows) {
@@ -178,13 +199,17 @@ void buildBlocks(HohMesh& result, const std::vector<BladeNode>& wall, const Oute
     // except at the sharpest edges, where the raw normals of SIRT's trailing edge (radius
     // about 2 firstCellHeight) fold the second cell.
     const auto normals = lineDirections(wall, 2);
+    // The first row alone within options.wallAngleLimit of the wall normal: turning the
+    // whole blend back lowered Q_J a few rows up next to STD10's sharp trailing edge, and
+    // with the parity of nT (docs/elliptic-smoothing.md).
+    const auto firstRow = limitedToWallAngle(normals, wall, options.wallAngleLimit);
     // Where the smoothed lines leave the wall far from its normal (next to a sharp edge),
     // the turn from the normal into the line within the blend can cross the neighbouring
     // line's: then the rows are placed again with a blend twice as long, up to
     // options.wallBlendRetries times. A mesh valid at the first blend is never changed.
     double blend = options.wallBlendLength;
     for (int attempt = 0;; ++attempt, blend *= 2) {
-      redistributeAlongLines(lines, o, condition.firstCellHeight, normals, blend);
+      redistributeAlongLines(lines, o, condition.firstCellHeight, normals, blend, firstRow);
       result.wallBlendLength = blend;
       if (attempt == options.wallBlendRetries || findInvalidCell(o).empty()) break;
     }

@@ -34,9 +34,10 @@ Eigen::Vector2d node(const StructuredBlock& b, int i, int j) { return {b.xAt(i, 
 
 void redistributeAlongLines(const StructuredBlock& lines, StructuredBlock& target,
                             double firstSpacing, const std::vector<Eigen::Vector2d>& wallNormals,
-                            double blendLength) {
+                            double blendLength, const std::vector<Eigen::Vector2d>& firstRowDirections) {
   if (target.ni != lines.ni || lines.nj < 2 || target.nj < 2 ||
-      (!wallNormals.empty() && static_cast<int>(wallNormals.size()) < lines.ni - 1))
+      (!wallNormals.empty() && static_cast<int>(wallNormals.size()) < lines.ni - 1) ||
+      (!firstRowDirections.empty() && (wallNormals.empty() || firstRowDirections.size() != wallNormals.size())))
     throw std::invalid_argument("redistributeAlongLines: blocks do not match");
   const int n = lines.ni - 1, outer = lines.nj - 1;
   std::vector<Eigen::Vector2d> p(static_cast<std::size_t>(lines.nj));
@@ -65,7 +66,8 @@ void redistributeAlongLines(const StructuredBlock& lines, StructuredBlock& targe
         // Row 1 exactly on the normal: the first cell height is exact.
         const double w = j == 1 ? 1.0 : (1 - t) * (1 - t) * (1 + 2 * t);
         const double along = j == 1 ? firstSpacing : d[j];
-        q += w * (p.front() + along * wallNormals[static_cast<std::size_t>(i)] - q);
+        const auto& direction = j == 1 && !firstRowDirections.empty() ? firstRowDirections : wallNormals;
+        q += w * (p.front() + along * direction[static_cast<std::size_t>(i)] - q);
       }
       target.xAt(i, j) = q.x();
       target.yAt(i, j) = q.y();

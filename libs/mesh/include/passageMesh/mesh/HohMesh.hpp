@@ -43,6 +43,12 @@ struct HohMeshOptions {
   // Over this many wall node spacings from the wall (at least 20 firstCellHeight) the final
   // nodes blend from the wall normal into the smoothed line (LineRedistribution.hpp).
   double wallBlendLength = 3.0;
+  // The wall lines leave the wall within this many degrees of its normal (the normal to
+  // the chord between a wall node's neighbours, as MeshStatistics measures it): where the
+  // smoothed wall normals turn further (next to an edge sharper than the node spacing),
+  // they are turned back to this angle (below the 10 degrees a wall-resolved RANS grid
+  // asks for; docs/elliptic-smoothing.md). 0: no limit.
+  double wallAngleLimit = 9.5;
   // Where the O-block folds after the rows are placed, they are placed again with the
   // blend twice as long, at most this many times (0: never; docs/elliptic-smoothing.md
   // "Longer wall blend where the rows fold").

@@ -25,11 +25,15 @@ namespace passageMesh {
 // log(d / firstSpacing) / log(L / firstSpacing), d the distance from the wall: the
 // wall-clustered rows grow about geometrically, so the turn is spread evenly over the
 // rows of the blend instead of being taken in its last few (docs/elliptic-smoothing.md).
-// Empty `wallNormals`: no blend.
-// Throws std::invalid_argument when a line is too short for the first spacing.
+// Empty `wallNormals`: no blend. `firstRowDirections` (unit, one per wall normal; empty:
+// the wall normals): row 1 alone along these instead, at firstSpacing from the wall; the
+// rows above blend from the wall normals as before.
+// Throws std::invalid_argument when a line is too short for the first spacing, or when the
+// directions do not match the loop.
 void redistributeAlongLines(const StructuredBlock& lines, StructuredBlock& target,
                             double firstSpacing,
                             const std::vector<Eigen::Vector2d>& wallNormals = {},
-                            double blendLength = 3.0);
+                            double blendLength = 3.0,
+                            const std::vector<Eigen::Vector2d>& firstRowDirections = {});
 
 }  // namespace passageMesh
