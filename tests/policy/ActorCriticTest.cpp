@@ -154,3 +154,23 @@ TEST(ActorCritic, ImitationPullsTheActorToTheDemonstratedActions) {
   for (int step = 0; step < 600; ++step) bounded.updateActor(s, 0, 0, Imitation{s, onBounds, 10.0});
   EXPECT_LT((bounded.act(s) - 0.95 * onBounds).cwiseAbs().maxCoeff(), 0.01);
 }
+
+// validityAndBoundedQuality: the quality q = sigmoid(output) fits valid meshes' Q as the
+// unbounded one does, but no input, however far from the data, makes the expected reward
+// leave [-1, 1] (an unbounded q, fitted on the valid meshes only, extrapolates freely).
+TEST(ActorCritic, TheBoundedQualityFitsValidMeshesAndStaysInItsRangeFarFromTheData) {
+  const NetworkLayout layout{3, 2, {16, 16}, 0.01, CriticModel::validityAndBoundedQuality};
+  ActorCritic critic(layout, {1e-3, 3e-3}, 5);
+  PolicyBatch s(6, 3), a(6, 2);
+  s << -0.5, 0.2, 0.9, 0.1, -0.8, 0.3, 0.7, 0.7, -0.2, 0.0, 0.5, -0.6, 0.4, 0.4, 0.4, -0.9, 0.1, 0.2;
+  a << 0.6, -0.4, -0.7, 0.2, 0.3, 0.8, -0.1, -0.9, 0.5, 0.5, -0.3, 0.0;
+  Eigen::VectorXd q(6);
+  q << 0.9, 0.3, 0.65, 0.8, 0.5, 0.95;
+  for (int step = 0; step < 3000; ++step) critic.updateCritic(s, a, q);
+  EXPECT_LT((critic.value(s, a) - q).cwiseAbs().maxCoeff(), 0.02);
+  for (const double far : {10.0, 100.0, 1e4}) {
+    const Eigen::VectorXd v = critic.value(far * s, -far * a);
+    EXPECT_LE(v.maxCoeff(), 1.0) << far;
+    EXPECT_GE(v.minCoeff(), -1.0) << far;
+  }
+}

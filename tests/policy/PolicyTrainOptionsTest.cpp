@@ -59,7 +59,7 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
   EXPECT_NE(bad("<episodes>0</episodes>").find("bad.xml:2"), std::string::npos);
   EXPECT_NE(bad("<hiddenLayers>512 x</hiddenLayers>").find("hiddenLayers"), std::string::npos);
   EXPECT_NE(bad("<actorLearningRate>-1</actorLearningRate>").find("positive"), std::string::npos);
-  EXPECT_NE(bad("<criticModel>quality</criticModel>").find("<criticModel> is 'reward' or 'validityAndQuality', not 'quality'"),
+  EXPECT_NE(bad("<criticModel>quality</criticModel>").find("<criticModel> is 'reward', 'validityAndQuality' or 'validityAndBoundedQuality', not 'quality'"),
             std::string::npos);
   EXPECT_NE(bad("<validityBarrier>-0.1</validityBarrier>").find("at least 0"), std::string::npos);
   // A barrier on a critic without a validity network would be silently ignored.
@@ -82,7 +82,9 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
 }
 
 TEST(PolicyTrainOptions, EveryEnumeratedSettingReadsBackFromItsWord) {
-  for (const CriticModel v : {CriticModel::reward, CriticModel::validityAndQuality}) EXPECT_EQ(criticModelNamed(nameOf(v)), v);
+  for (const CriticModel v :
+       {CriticModel::reward, CriticModel::validityAndQuality, CriticModel::validityAndBoundedQuality})
+    EXPECT_EQ(criticModelNamed(nameOf(v)), v);
   for (const EdgeRadiusDraw v : {EdgeRadiusDraw::uniform, EdgeRadiusDraw::halfLogUniform})
     EXPECT_EQ(edgeRadiusDrawNamed(nameOf(v)), v);
   for (const ActorStart v : {ActorStart::random, ActorStart::defaults}) EXPECT_EQ(actorStartNamed(nameOf(v)), v);

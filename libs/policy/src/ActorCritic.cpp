@@ -22,7 +22,7 @@ struct ActorCritic::Networks {
         critic(makeCritic(l)),
         actorOptimizer(actor->parameters(), torch::optim::AdamOptions(rates.actor)),
         criticOptimizer(critic->parameters(), torch::optim::AdamOptions(rates.critic)) {
-    if (l.critic == CriticModel::validityAndQuality) {
+    if (hasValidity(l.critic)) {
       // Built after the critic, so `reward` runs start from the same weights as before
       // the model existed; it learns at the critic's rate, being a critic too.
       validity = makeCritic(l);
@@ -31,11 +31,17 @@ struct ActorCritic::Networks {
     }
   }
 
+  // q(s, a) of a valid mesh (with `validity`), or the reward (without).
+  torch::Tensor quality(const torch::Tensor& input) {
+    const torch::Tensor out = critic->forward(input);
+    return layout.critic == CriticModel::validityAndBoundedQuality ? torch::sigmoid(out) : out;
+  }
+
   // The critic's estimate of the expected reward of each row of [s, a].
   torch::Tensor expectedReward(const torch::Tensor& input) {
     if (!validity) return critic->forward(input);
     const torch::Tensor p = torch::sigmoid(validity->forward(input));
-    return p * (critic->forward(input) + 1.0) - 1.0;  // p q + (1 - p)(-1)
+    return p * (quality(input) + 1.0) - 1.0;  // p q + (1 - p)(-1)
   }
 
   NetworkLayout layout;
@@ -43,7 +49,7 @@ struct ActorCritic::Networks {
   FullyConnected critic;  // Q(s, a), or q(s, a) of a valid mesh with `validity`
   torch::optim::Adam actorOptimizer;
   torch::optim::Adam criticOptimizer;
-  FullyConnected validity{nullptr};  // the logit of p(s, a) (CriticModel::validityAndQuality)
+  FullyConnected validity{nullptr};  // the logit of p(s, a) (hasValidity(layout.critic))
   std::unique_ptr<torch::optim::Adam> validityOptimizer;
 };
 
@@ -93,7 +99,7 @@ double ActorCritic::updateCritic(const PolicyBatch& states, const PolicyBatch& a
   torch::binary_cross_entropy_with_logits(logit, valid).backward();
   n.validityOptimizer->step();
   n.criticOptimizer.zero_grad();
-  const torch::Tensor q = n.critic->forward(input);
+  const torch::Tensor q = n.quality(input);
   ((q - target).pow(2) * valid).sum().div(valid.sum().clamp_min(1.0)).backward();
   n.criticOptimizer.step();
   // Reported: the expected reward's squared error before the steps, comparable with
@@ -113,7 +119,7 @@ double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty, 
   if (n.validity && validityBarrier > 0) {
     // q + lambda log p: the quality of a valid mesh, with a barrier that only pushes where
     // failures are likely (docs/policy.md).
-    q = n.critic->forward(input).mean();
+    q = n.quality(input).mean();
     loss = -q - validityBarrier * torch::log_sigmoid(n.validity->forward(input)).mean();
   } else {
     q = n.expectedReward(input).mean();

@@ -62,7 +62,10 @@ const Words<ActorStart> actorStartWords{"actorStart", {{"random", ActorStart::ra
 const Words<EdgeRadiusDraw> edgeRadiusWords{
     "edgeRadii", {{"halfLogUniform", EdgeRadiusDraw::halfLogUniform}, {"uniform", EdgeRadiusDraw::uniform}}};
 const Words<CriticModel> criticModelWords{
-    "criticModel", {{"reward", CriticModel::reward}, {"validityAndQuality", CriticModel::validityAndQuality}}};
+    "criticModel",
+    {{"reward", CriticModel::reward},
+     {"validityAndQuality", CriticModel::validityAndQuality},
+     {"validityAndBoundedQuality", CriticModel::validityAndBoundedQuality}}};
 
 }  // namespace
 
@@ -211,9 +214,10 @@ PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file) {
   const Dictionary dict = Dictionary::read(file, "policyTrainDict", keyNames());
   for (const Key& k : keys())
     if (dict.has(k.name)) k.read(dict, options);
-  if (options.validityBarrier > 0 && options.criticModel != CriticModel::validityAndQuality)
+  if (options.validityBarrier > 0 && !hasValidity(options.criticModel))
     throw InputError(file.string(), dict.line("validityBarrier"),
-                     "<validityBarrier> needs <criticModel>validityAndQuality</criticModel>: the '" +
+                     "<validityBarrier> needs <criticModel>validityAndQuality</criticModel> (or "
+                     "validityAndBoundedQuality): the '" +
                          nameOf(options.criticModel) + "' critic has no validity to put a barrier on");
   if (options.imitationWeight > 0 && options.searchEvery == 0)
     throw InputError(file.string(), dict.line("imitationWeight"),

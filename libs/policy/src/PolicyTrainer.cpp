@@ -32,7 +32,7 @@ std::string layoutText(const NetworkLayout& l) {
   s.precision(17);
   s << l.stateSize << " " << l.actionSize << " [" << l.hiddenText() << "] " << l.leakySlope;
   // Checkpoints from before the critic models name none: `reward` stays unnamed.
-  if (l.critic == CriticModel::validityAndQuality) s << " validityAndQuality";
+  if (l.critic != CriticModel::reward) s << " " << nameOf(l.critic);
   return s.str();
 }
 

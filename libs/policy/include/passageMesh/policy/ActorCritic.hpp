@@ -47,14 +47,14 @@ class ActorCritic {
   // Q(s, a), the critic's expected reward, for each row.
   Eigen::VectorXd value(const PolicyBatch& states, const PolicyBatch& actions) const;
 
-  // One Adam step of the critic on mean((Q(s, a) - r)^2) (with validityAndQuality: one step
+  // One Adam step of the critic on mean((Q(s, a) - r)^2) (with a validity network: one step
   // of each network on its own loss); returns mean((Q(s, a) - r)^2) before the step.
   double updateCritic(const PolicyBatch& states, const PolicyBatch& actions,
                       const Eigen::VectorXd& rewards);
   // One Adam step of the actor on -mean(Q(s, pi(s))) + boundPenalty * mean over states and
   // actions of max(0, |u| - atanh(0.95))^2, u the actor's output before tanh; returns mean
   // Q(s, pi(s)) before the step.
-  // With CriticModel::validityAndQuality and validityBarrier > 0 the actor climbs
+  // With a validity network (hasValidity) and validityBarrier > 0 the actor climbs
   // q(s, a) + validityBarrier * log p(s, a) instead of the expected reward (and returns
   // mean q).
   // A non-empty `imitation` adds weight * mean over its rows of |u(s) - atanh(a')|^2, u the

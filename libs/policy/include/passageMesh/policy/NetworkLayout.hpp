@@ -12,7 +12,13 @@ namespace passageMesh {
 // error on the valid episodes only); the expected reward p q + (1 - p)(-1) is what the
 // actor climbs. It keeps the -1 of invalid meshes out of the quality fit, whose
 // differences near the optimum are a hundred times smaller (docs/policy.md).
-enum class CriticModel { reward, validityAndQuality };
+// `validityAndBoundedQuality`: the same with q = sigmoid(output), in (0, 1) as the Q of a
+// valid mesh is: fitted on valid meshes only, an unbounded q can promise the actor more
+// than any mesh gives where the data are few (docs/policy.md).
+enum class CriticModel { reward, validityAndQuality, validityAndBoundedQuality };
+
+// Whether the critic has the validity network p(s, a).
+inline bool hasValidity(CriticModel m) { return m != CriticModel::reward; }
 
 struct NetworkLayout {
   int stateSize = 0;

@@ -59,10 +59,10 @@ struct PolicyTrainOptions {
   // apart) or uniform (uniform draws, linear in the state: the policies trained before
   // the twelfth session, 2026-12-04). docs/policy.md measures both.
   EdgeRadiusDraw edgeRadii = EdgeRadiusDraw::halfLogUniform;
-  // What the critic predicts: reward (the paper's) or validityAndQuality (NetworkLayout.hpp;
-  // docs/policy.md measures both).
+  // What the critic predicts: reward (the paper's), validityAndQuality or
+  // validityAndBoundedQuality (NetworkLayout.hpp; docs/policy.md measures them).
   CriticModel criticModel = CriticModel::reward;
-  // With validityAndQuality: 0 makes the actor climb the expected reward; lambda > 0 makes
+  // With a validity network: 0 makes the actor climb the expected reward; lambda > 0 makes
   // it climb q + lambda log p (ActorCritic::updateActor).
   double validityBarrier = 0;
   // Search-guided exploration (docs/policy.md): every searchEvery episodes (0: never, the
