@@ -22,22 +22,6 @@ ArcLengthTable periodicArcLength(const PassageBoundary& b, int samples) {
   return ArcLengthTable(std::move(x), points);
 }
 
-// Splits `total` intervals over pieces of the given lengths (at least `minimum` each).
-std::vector<int> share(int total, const std::vector<double>& lengths, int minimum) {
-  double sum = 0;
-  for (double l : lengths) sum += l;
-  std::vector<int> n(lengths.size());
-  int given = 0;
-  for (std::size_t k = 0; k < lengths.size(); ++k) {
-    n[k] = std::max(minimum, static_cast<int>(std::lround(total * lengths[k] / sum)));
-    given += n[k];
-  }
-  // Put the rounding difference on the longest piece.
-  const auto longest = std::max_element(lengths.begin(), lengths.end()) - lengths.begin();
-  n[static_cast<std::size_t>(longest)] += total - given;
-  return n;
-}
-
 }  // namespace
 
 std::vector<double> periodicArcPositions(double length, int intervals, double inletSpacing,
@@ -73,17 +57,25 @@ OuterLoop buildOuterLoop(const PassageBoundary& boundary, int nT, int lowerSideI
   const double ySeam = std::clamp(trailingEdgeY, yLowB + margin, yLowB + pitch - margin);
 
   const int upperSideIntervals = nT - lowerSideIntervals;
-  const auto lower = share(lowerSideIntervals, {ySeam - yLowB, arc.length(), yMid - yLowA}, 1);
-  const auto upper =
-      share(upperSideIntervals, {yLowA + pitch - yMid, arc.length(), yLowB + pitch - ySeam}, 1);
+  // The interface pieces' lengths on each side of the loop (the periodic segments have the
+  // same length).
+  const double lowerOut = ySeam - yLowB, lowerIn = yMid - yLowA;
+  const double upperIn = yLowA + pitch - yMid, upperOut = yLowB + pitch - ySeam;
+  // Both periodic segments need one count: the mean of the two sides' shares by length,
+  // rounded once; each side's rest is split between its interface pieces by their lengths.
+  // Every count is then a rounded linear function of the sides' intervals and moves by at
+  // most one node when nT does. (Rounding each side's three shares and taking the mean of
+  // the two periodic ones made the counts step back and forth with nT, and Q with them:
+  // docs/elliptic-smoothing.md "Outer-loop counts rounded once".)
   OuterLoop loop;
-  // Both periodic segments need one count: the mean, the difference taken up by the
-  // interface pieces of each side.
-  loop.periodic = std::max(2, (lower[1] + upper[1]) / 2);
-  loop.outletLower = lower[0];
-  loop.inletLower = lowerSideIntervals - loop.outletLower - loop.periodic;
-  loop.inletUpper = upper[0];
-  loop.outletUpper = upperSideIntervals - loop.inletUpper - loop.periodic;
+  const double lowerShare = lowerSideIntervals * arc.length() / (lowerOut + arc.length() + lowerIn);
+  const double upperShare = upperSideIntervals * arc.length() / (upperIn + arc.length() + upperOut);
+  loop.periodic = std::max(2, static_cast<int>(std::lround(0.5 * (lowerShare + upperShare))));
+  const int lowerRest = lowerSideIntervals - loop.periodic, upperRest = upperSideIntervals - loop.periodic;
+  loop.outletLower = static_cast<int>(std::lround(lowerRest * lowerOut / (lowerOut + lowerIn)));
+  loop.inletLower = lowerRest - loop.outletLower;
+  loop.inletUpper = static_cast<int>(std::lround(upperRest * upperIn / (upperIn + upperOut)));
+  loop.outletUpper = upperRest - loop.inletUpper;
   auto fix = [](int& a, int& b) {  // keep both of a pair of pieces >= 1
     if (a < 1) { b -= 1 - a; a = 1; }
     if (b < 1) { a -= 1 - b; b = 1; }

@@ -22,12 +22,12 @@ struct MeshingParameters {
 
   double yIn = 0;           // vertical offset of the periodic boundary at the inlet [m]
   double yOut = -0.01;      // ... at the outlet [m]
-  double alphaCamber = 0.98;  // how much the periodic boundary follows the camber line
-  double betaIn = 0.492;    // O/H interface position as a fraction of xIn
-  double betaOut = 0.508;   // ... of xOut
+  double alphaCamber = 0.97;  // how much the periodic boundary follows the camber line
+  double betaIn = 0.452;    // O/H interface position as a fraction of xIn
+  double betaOut = 0.588;   // ... of xOut
   int nT = 372;             // O-block nodes around the blade
-  double gammaLe = 2.95;    // node clustering towards the leading edge (0 = none)
-  double gammaTe = 3;       // ... towards the trailing edge
+  double gammaLe = 3.1;     // node clustering towards the leading edge (0 = none)
+  double gammaTe = 2.95;    // ... towards the trailing edge
 
   // The defaults of etc/meshDictDefaults.xml for a blade of the given chord (the member
   // initialisers above mirror that file for a chord of 1 m, where its lengths in chords
