@@ -18,8 +18,8 @@
 // The counts share the blade's: the lower side's nodes face outlet-low, the lower periodic
 // segment and the inlet interface's lower part, the upper side's nodes the rest, in
 // proportion to the pieces' lengths (the periodic count the mean of both sides' shares,
-// rounded once; each side's interface pieces split the rest). Both periodic segments carry the same count and the
-// same x values, bit for bit: y_upper = y_lower + pitch. Interface nodes are uniform in y
+// rounded once; each side's interface pieces split the rest). Both periodic segments
+// carry the same count and the same x values, bit for bit: y_upper = y_lower + pitch. Interface nodes are uniform in y
 // (the H-blocks beyond them have uniform cells); periodic nodes uniform in arc length
 // except near the two corners, where their spacing grows or shrinks to the interface's
 // (periodicArcPositions): the cells at a corner are then as large on both of its sides
