@@ -19,8 +19,9 @@
 // segment and the inlet interface's lower part, the upper side's nodes the rest, in
 // proportion to the pieces' lengths (the periodic count the mean of both sides' shares,
 // rounded once; each side's interface pieces split the rest). Both periodic segments
-// carry the same count and the same x values, bit for bit: y_upper = y_lower + pitch. Interface nodes are uniform in y
-// (the H-blocks beyond them have uniform cells); periodic nodes uniform in arc length
+// carry the same count and the same x values, bit for bit: y_upper = y_lower + pitch.
+// Interface nodes are uniform in y (the H-blocks beyond them have uniform cells);
+// periodic nodes uniform in arc length
 // except near the two corners, where their spacing grows or shrinks to the interface's
 // (periodicArcPositions): the cells at a corner are then as large on both of its sides
 // whatever the counts, so one node more on an interface no longer jumps Q_J there.
