@@ -7,6 +7,7 @@
 
 #include "passageMesh/mesh/BladeNodes.hpp"
 #include "passageMesh/mesh/LineRedistribution.hpp"
+#include "passageMesh/mesh/MeshStatistics.hpp"  // discreteWallNormal
 #include "passageMesh/mesh/OuterLoop.hpp"
 #include "passageMesh/mesh/Stretching.hpp"
 #include "passageMesh/passage/PassageBoundary.hpp"
@@ -71,17 +72,15 @@ std::vector<Eigen::Vector2d> lineDirections(const std::vector<BladeNode>& wall, 
   return direction;
 }
 
-// Each direction turned back to within `limitDegrees` of the normal of the discrete wall
-// (the chord between node i's neighbours turned by +90 degrees: outward for i clockwise
-// around the blade, as MeshStatistics measures it), where it leans further.
+// Each direction turned back to within `limitDegrees` of the discrete wall normal (the one
+// wallLayerStatistics measures against), where it leans further.
 std::vector<Eigen::Vector2d> limitedToWallAngle(std::vector<Eigen::Vector2d> direction,
                                                 const std::vector<BladeNode>& wall, double limitDegrees) {
   if (limitDegrees <= 0) return direction;
   const int nT = static_cast<int>(wall.size());
   const double limit = limitDegrees * M_PI / 180;
   for (int i = 0; i < nT; ++i) {
-    const Eigen::Vector2d tangent = (wall[(i + 1) % nT].point - wall[(i + nT - 1) % nT].point).normalized();
-    const Eigen::Vector2d normal(-tangent.y(), tangent.x());
+    const Eigen::Vector2d normal = discreteWallNormal(wall[(i + nT - 1) % nT].point, wall[(i + 1) % nT].point);
     const Eigen::Vector2d& d = direction[i];
     const double angle = std::atan2(normal.x() * d.y() - normal.y() * d.x(), normal.dot(d));
     if (std::abs(angle) <= limit) continue;

@@ -14,11 +14,10 @@ WallLayerStatistics wallLayerStatistics(const StructuredBlock& o, double firstCe
   double angleSum = 0;
   for (int i = 0; i < n; ++i) {
     const int e = (i + 1) % n, w = (i + n - 1) % n;
-    const Eigen::Vector2d tangent =
-        Eigen::Vector2d(o.xAt(e, 0) - o.xAt(w, 0), o.yAt(e, 0) - o.yAt(w, 0)).normalized();
+    const Eigen::Vector2d normal =
+        discreteWallNormal(Eigen::Vector2d(o.xAt(w, 0), o.yAt(w, 0)), Eigen::Vector2d(o.xAt(e, 0), o.yAt(e, 0)));
+    const Eigen::Vector2d tangent(normal.y(), -normal.x());
     const Eigen::Vector2d line(o.xAt(i, 1) - o.xAt(i, 0), o.yAt(i, 1) - o.yAt(i, 0));
-    // Outward normal for i clockwise around the blade: the tangent turned by +90 degrees.
-    const Eigen::Vector2d normal(-tangent.y(), tangent.x());
     const double error = std::abs(line.dot(normal) / firstCellHeight - 1);
     if (error <= 0.02) ++within;
     if (error > s.heightMaxError) {
