@@ -33,18 +33,18 @@ int main(int argc, char** argv) {
   const std::filesystem::path output = argv[2];
   const int threads = argc > 3 ? std::max(1, std::atoi(argv[3])) : 2;
   const std::string only = argc > 4 ? argv[4] : "";
+  const auto& names = MeshingParameters::names();
+  if (!only.empty() && std::find(names.begin(), names.end(), only) == names.end()) {
+    std::fprintf(stderr, "qualityAlongParameters: no meshing parameter '%s'\n", only.c_str());
+    return 2;
+  }
   const bench::TutorialPassage tutorial = bench::loadTutorialPassage(name);
   const BladeShape blade(tutorial.blade);
   const double chord = tutorial.blade.chord;
   const auto& condition = tutorial.condition;
   const MeshingParameters defaults = MeshingParameters::defaults(chord);
   const auto lower = MeshingParameters::lowerBounds(chord), upper = MeshingParameters::upperBounds(chord);
-  const auto& names = MeshingParameters::names();
   std::filesystem::create_directories(output);
-  if (!only.empty() && std::find(names.begin(), names.end(), only) == names.end()) {
-    std::fprintf(stderr, "qualityAlongParameters: no meshing parameter '%s'\n", only.c_str());
-    return 2;
-  }
   std::printf("| parameter | steps | valid | steps with |dQ| > 0.005 | largest |dQ| between valid neighbours | at |\n"
               "|---|---|---|---|---|---|\n");
   GnuplotRun gnuplot;
