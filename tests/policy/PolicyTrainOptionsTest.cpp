@@ -4,6 +4,7 @@
 
 #include "../TestFiles.hpp"
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/policy/PolicyScaling.hpp"
 
 using namespace passageMesh;
 
@@ -87,7 +88,7 @@ TEST(PolicyTrainOptions, EveryEnumeratedSettingReadsBackFromItsWord) {
     EXPECT_EQ(criticModelNamed(nameOf(v)), v);
   for (const EdgeRadiusDraw v : {EdgeRadiusDraw::uniform, EdgeRadiusDraw::halfLogUniform})
     EXPECT_EQ(edgeRadiusDrawNamed(nameOf(v)), v);
-  for (const ActorStart v : {ActorStart::random, ActorStart::defaults}) EXPECT_EQ(actorStartNamed(nameOf(v)), v);
+  for (const ActorStart v : {ActorStart::random, ActorStart::defaults, ActorStart::meshDict}) EXPECT_EQ(actorStartNamed(nameOf(v)), v);
   EXPECT_EQ(nameOf(CriticModel::validityAndQuality), "validityAndQuality");
   try {
     edgeRadiusDrawNamed("Uniform");  // words are case-sensitive, as in the dictionary
@@ -95,4 +96,79 @@ TEST(PolicyTrainOptions, EveryEnumeratedSettingReadsBackFromItsWord) {
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "<edgeRadii> is 'halfLogUniform' or 'uniform', not 'Uniform'");
   }
+}
+
+namespace {
+
+// A case folder with system/policyTrainDict.xml (body inside <policyTrainDict>) and
+// system/start.xml (body inside <meshDict>); the dictionary's path.
+std::filesystem::path startCase(const std::string& name, const std::string& trainBody, const std::string& startBody) {
+  testData::writeTempFile(name + "/system", "start.xml", "<meshDict>\n" + startBody + "\n</meshDict>\n");
+  return testData::writeTempFile(name + "/system", "policyTrainDict.xml",
+                                 "<policyTrainDict>\n" + trainBody + "\n</policyTrainDict>\n");
+}
+
+std::string readError(const std::filesystem::path& file) {
+  try {
+    readPolicyTrainDict(file);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+const std::string startFromFile = "<actorStart>meshDict</actorStart>\n<actorStartMeshDict>system/start.xml</actorStartMeshDict>";
+
+}  // namespace
+
+TEST(PolicyTrainOptions, TheActorStartsAtTheMeshDictItNamesRelativeToTheCase) {
+  const auto file = startCase("startCase", startFromFile, "<yOut>-0.01c</yOut>\n<betaIn>0.492</betaIn>\n<nT>372</nT>");
+  const PolicyTrainOptions o = readPolicyTrainDict(file);
+  ASSERT_EQ(o.actorStart, ActorStart::meshDict);
+  EXPECT_EQ(o.actorStartMeshDict, "system/start.xml");
+  // Lengths in chords (the start is chord-normalised); keys the file lacks take the defaults.
+  MeshingParameters expected = MeshingParameters::defaults(1.0);
+  expected.yOut = -0.01;
+  expected.betaIn = 0.492;
+  expected.nT = 372;
+  EXPECT_EQ(o.actorStartParameters.toArray(), expected.toArray());
+  const PolicyAction a = policyAction(expected, 1.0);
+  EXPECT_EQ(o.actorStartAction(o.passageEnvironment()), std::vector<double>(a.begin(), a.end()));
+  EXPECT_NE(o.actorStartAction(o.passageEnvironment()), PolicyTrainOptions{}.actorStartAction(o.passageEnvironment()));
+  PolicyTrainOptions random;
+  random.actorStart = ActorStart::random;
+  EXPECT_TRUE(random.actorStartAction(random.passageEnvironment()).empty());
+  // A resumed run is checked against the file's content, not its name.
+  const auto settingOf = [](const PolicyTrainOptions& options) {
+    for (const auto& [key, value] : trajectorySettings(options))
+      if (key == "actorStartParameters") return value;
+    return std::string("missing");
+  };
+  EXPECT_NE(settingOf(o).find("betaIn 0.49199999999999999"), std::string::npos) << settingOf(o);
+  EXPECT_EQ(settingOf(PolicyTrainOptions{}), "");
+  PolicyTrainOptions moved = o;
+  moved.actorStartMeshDict = "elsewhere.xml";
+  EXPECT_EQ(settingOf(moved), settingOf(o));
+  moved.actorStartParameters.betaIn = 0.5;
+  EXPECT_NE(settingOf(moved), settingOf(o));
+}
+
+TEST(PolicyTrainOptions, AnActorStartFileThatCannotBeUsedIsRefusedWithTheLine) {
+  EXPECT_NE(readError(startCase("startMissingKey", "<actorStart>meshDict</actorStart>", ""))
+                .find("policyTrainDict.xml:2: <actorStart>meshDict</actorStart> needs <actorStartMeshDict>"),
+            std::string::npos);
+  EXPECT_NE(readError(startCase("startUnused", "<actorStartMeshDict>system/start.xml</actorStartMeshDict>", ""))
+                .find("policyTrainDict.xml:2: <actorStartMeshDict> is read only with <actorStart>meshDict"),
+            std::string::npos);
+  EXPECT_NE(readError(startCase("startNoFile",
+                                "<actorStart>meshDict</actorStart>\n<actorStartMeshDict>system/none.xml</actorStartMeshDict>", ""))
+                .find("policyTrainDict.xml:3: <actorStartMeshDict> "),
+            std::string::npos);
+  const std::string outside = readError(startCase("startOutside", startFromFile, "<betaIn>0.95</betaIn>"));
+  EXPECT_NE(outside.find("policyTrainDict.xml:3: the actor's start "), std::string::npos) << outside;
+  EXPECT_NE(outside.find("start.xml: <betaIn> 0.94999999999999996 is outside [0.10000000000000001, 0.90000000000000002]: "
+                         "the start must lie in the range box"),
+            std::string::npos)
+      << outside;
+  EXPECT_NE(readError(startCase("startBadValue", startFromFile, "<nT>many</nT>")).find("start.xml:2"), std::string::npos);
 }

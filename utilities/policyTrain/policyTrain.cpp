@@ -109,6 +109,11 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
     baseline = d.meanReward;
     std::printf("policyTrain: the defaults on the %d validation passages: mean reward %.17g, median %.17g, "
                 "%d valid\n", d.passages, d.meanReward, d.medianReward, d.valid);
+    if (options.actorStart == ActorStart::meshDict) {
+      const ValidationRecord s = trainer.validateAction(options.actorStartAction(environment));
+      std::printf("policyTrain: the actor's start (%s) on them: mean reward %.17g, median %.17g, %d valid\n",
+                  options.actorStartMeshDict.c_str(), s.meanReward, s.medianReward, s.valid);
+    }
     std::fflush(stdout);
   }
   std::vector<std::string> warnings;

@@ -9,6 +9,8 @@
 
 #include "passageMesh/core/Dictionary.hpp"
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/passage/MeshingParameters.hpp"
+#include "passageMesh/policy/PolicyScaling.hpp"
 
 namespace passageMesh {
 
@@ -35,6 +37,18 @@ PassageEnvironment PolicyTrainOptions::passageEnvironment() const {
                                                                                            : EdgeRadiusScale::linear));
 }
 
+std::vector<double> PolicyTrainOptions::actorStartAction(const PolicyEnvironment& environment) const {
+  switch (actorStart) {
+    case ActorStart::random: return {};
+    case ActorStart::defaults: return environment.defaultAction();
+    case ActorStart::meshDict: {
+      const PolicyAction a = policyAction(actorStartParameters, 1.0);
+      return {a.begin(), a.end()};
+    }
+  }
+  return {};
+}
+
 namespace {
 
 // The words of one enumerated setting.
@@ -58,7 +72,7 @@ struct Words {
   }
 };
 
-const Words<ActorStart> actorStartWords{"actorStart", {{"random", ActorStart::random}, {"defaults", ActorStart::defaults}}};
+const Words<ActorStart> actorStartWords{"actorStart", {{"random", ActorStart::random}, {"defaults", ActorStart::defaults}, {"meshDict", ActorStart::meshDict}}};
 const Words<EdgeRadiusDraw> edgeRadiusWords{
     "edgeRadii", {{"halfLogUniform", EdgeRadiusDraw::halfLogUniform}, {"uniform", EdgeRadiusDraw::uniform}}};
 const Words<CriticModel> criticModelWords{
@@ -186,6 +200,8 @@ const std::vector<Key>& keys() {
       {"checkpointEvery", readInteger("checkpointEvery", &O::checkpointEvery, 1), [](const O& o) { return std::to_string(o.checkpointEvery); }},
       {"logEvery", readInteger("logEvery", &O::logEvery, 1), [](const O& o) { return std::to_string(o.logEvery); }},
       {"actorStart", readChoice(actorStartWords, &O::actorStart), [](const O& o) { return nameOf(o.actorStart); }},
+      {"actorStartMeshDict", [](const Dictionary& d, O& o) { o.actorStartMeshDict = d.text("actorStartMeshDict"); },
+       [](const O& o) { return o.actorStartMeshDict.string(); }},
       {"edgeRadii", readChoice(edgeRadiusWords, &O::edgeRadii), [](const O& o) { return nameOf(o.edgeRadii); }},
       {"criticModel", readChoice(criticModelWords, &O::criticModel), [](const O& o) { return nameOf(o.criticModel); }},
       {"validityBarrier", readPositive("validityBarrier", [](O& o) -> double& { return o.validityBarrier; }, true),
@@ -198,6 +214,42 @@ const std::vector<Key>& keys() {
       {"threads", readInteger("threads", &O::threads, 0), [](const O& o) { return std::to_string(o.threads); }},
   };
   return k;
+}
+
+// "name value ..." of meshing parameters, exact.
+std::string meshDictText(const MeshingParameters& p) {
+  std::string text;
+  const auto v = p.toArray();
+  for (int k = 0; k < MeshingParameters::size; ++k)
+    text += (k ? " " : "") + MeshingParameters::names()[k] + " " + exact(v[k]);
+  return text;
+}
+
+// With <actorStart>meshDict: the parameters of <actorStartMeshDict> (relative to the case
+// directory, the folder above system/), refused when outside the range box (a start the
+// actor's tanh cannot reach).
+void readActorStartMeshDict(const std::filesystem::path& file, const Dictionary& dict, PolicyTrainOptions& options) {
+  const bool named = !options.actorStartMeshDict.empty();
+  if (options.actorStart != ActorStart::meshDict) {
+    if (named)
+      throw InputError(file.string(), dict.line("actorStartMeshDict"),
+                       "<actorStartMeshDict> is read only with <actorStart>meshDict</actorStart>");
+    return;
+  }
+  if (!named)
+    throw InputError(file.string(), dict.line("actorStart"),
+                     "<actorStart>meshDict</actorStart> needs <actorStartMeshDict>, the meshDict file to start from");
+  std::filesystem::path start = options.actorStartMeshDict;
+  if (start.is_relative()) start = file.parent_path().parent_path() / start;
+  if (!std::filesystem::is_regular_file(start))
+    throw InputError(file.string(), dict.line("actorStartMeshDict"),
+                     "<actorStartMeshDict> " + start.string() + " not found (paths are relative to the case directory)");
+  std::vector<std::string> outside;
+  options.actorStartParameters = readMeshDict(start, 1.0, &outside);
+  if (!outside.empty())  // the reader's warning, without the clipping it would do for a mesh
+    throw InputError(file.string(), dict.line("actorStartMeshDict"),
+                     "the actor's start " + outside.front().substr(0, outside.front().rfind(", clipped")) +
+                         ": the start must lie in the range box");
 }
 
 std::vector<std::string> keyNames() {
@@ -227,6 +279,7 @@ PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file) {
     throw InputError(file.string(), dict.line("wideNoiseShare"),
                      "<wideNoiseShare> is a share of the episodes: expected a value in [0, 1], got " +
                          exact(options.wideNoiseShare));
+  readActorStartMeshDict(file, dict, options);
   if (options.minibatch > options.bufferCapacity)
     throw InputError(file.string(), dict.line(dict.has("minibatch") ? "minibatch" : "bufferCapacity"),
                      "<minibatch> " + std::to_string(options.minibatch) + " is larger than <bufferCapacity> " +
@@ -238,7 +291,11 @@ std::vector<std::pair<std::string, std::string>> trajectorySettings(const Policy
   std::vector<std::pair<std::string, std::string>> settings;
   for (const Key& k : keys()) {
     const std::string name = k.name;
-    if (name != "episodes" && name != "threads" && name != "checkpointEvery" && name != "logEvery")
+    if (name == "actorStartMeshDict")  // what decides the weights is the file's content, not its name
+      settings.emplace_back("actorStartParameters", options.actorStart == ActorStart::meshDict
+                                                        ? meshDictText(options.actorStartParameters)
+                                                        : std::string());
+    else if (name != "episodes" && name != "threads" && name != "checkpointEvery" && name != "logEvery")
       settings.emplace_back(name, k.write(options));
   }
   return settings;

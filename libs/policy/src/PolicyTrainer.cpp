@@ -99,7 +99,7 @@ PolicyTrainer::PolicyTrainer(const PolicyTrainOptions& options, const PolicyEnvi
       rollouts_(rollouts),
       learner_((torch::set_num_threads(1), options.layout(environment.stateSize(), environment.actionSize())),
                options.learningRates, options.seed,
-               options.actorStart == ActorStart::defaults ? environment.defaultAction() : std::vector<double>{}),
+               options.actorStartAction(environment)),
       buffer_(environment.stateSize(), environment.actionSize(), options.bufferCapacity),
       demonstrations_(environment.stateSize(), environment.actionSize(), options.bufferCapacity),
       minibatchRandom_(episodeRandom(options.seed, 0, minibatchStream)),

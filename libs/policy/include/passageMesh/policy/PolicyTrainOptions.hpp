@@ -16,8 +16,9 @@
 namespace passageMesh {
 
 // The actor's first weights: LibTorch's default rule (the paper's), or that rule and then
-// moved so that the actor starts at the environment's default action.
-enum class ActorStart { random, defaults };
+// moved so that the actor starts at the environment's default action, or at the action of
+// a meshDict file's parameters (PolicyTrainOptions::actorStartMeshDict).
+enum class ActorStart { random, defaults, meshDict };
 
 struct PolicyTrainOptions {
   long episodes = 100000;         // episodes in the whole run (a resumed run continues to it)
@@ -52,8 +53,12 @@ struct PolicyTrainOptions {
   long checkpointEvery = 5000;    // episodes between checkpoints
   long logEvery = 1000;           // episodes between learning-curve rows
   // The actor's first weights (for the passages: etc/meshDictDefaults.xml's action;
-  // docs/policy.md measures both).
+  // docs/policy.md measures them). With meshDict: the file as the dictionary names it
+  // (relative to the case directory) and its parameters for a chord of 1 m (lengths in
+  // chords), read by readPolicyTrainDict.
   ActorStart actorStart = ActorStart::defaults;
+  std::filesystem::path actorStartMeshDict;
+  MeshingParameters actorStartParameters;
   // The training passages' edge radii: halfLogUniform (each radius log-uniform in its
   // range with probability 1/2, logarithmic in the state: sharp edges are common and told
   // apart) or uniform (uniform draws, linear in the state: the policies trained before
@@ -83,6 +88,8 @@ struct PolicyTrainOptions {
   NetworkLayout layout(int stateSize, int actionSize) const;
   // The sampler passages this training draws, scaled as its edgeRadii says.
   PassageEnvironment passageEnvironment() const;
+  // The action the actor starts at (empty for random).
+  std::vector<double> actorStartAction(const PolicyEnvironment& environment) const;
 };
 
 // The words of the dictionary (and of the benches' command lines) for the enumerated
