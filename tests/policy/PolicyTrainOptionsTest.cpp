@@ -172,3 +172,12 @@ TEST(PolicyTrainOptions, AnActorStartFileThatCannotBeUsedIsRefusedWithTheLine) {
       << outside;
   EXPECT_NE(readError(startCase("startBadValue", startFromFile, "<nT>many</nT>")).find("start.xml:2"), std::string::npos);
 }
+
+TEST(PolicyTrainOptions, TheShippedTrainingDictionaryReadsAndStartsAtItsStartFile) {
+  const std::filesystem::path tutorial = std::filesystem::path(PASSAGEMESH_SOURCE_DIR) / "tutorials" / "policyTrain";
+  const PolicyTrainOptions o = readPolicyTrainDict(tutorial / "system" / "policyTrainDict.xml");
+  ASSERT_EQ(o.actorStart, ActorStart::meshDict);
+  EXPECT_EQ(o.actorStartParameters.toArray(),
+            readMeshDict(tutorial / "system" / "actorStartMeshDict.xml", 1.0).toArray());
+  EXPECT_NE(o.actorStartParameters.toArray(), MeshingParameters::defaults(1.0).toArray());
+}
