@@ -16,5 +16,6 @@ plot 'eighteenthSession-retrain-validation.csv' every ::1 using 1:2 with linespo
      'eighteenthSession-oldDefaultsStart-validation.csv' every ::1 using 1:2 with linespoints title "C: old start, moves to old defaults", \
      'nineteenthSession-oldStartOldMovesSeed2-validation.csv' every ::1 using 1:2 with linespoints title "C, seed 2", \
      'nineteenthSession-oldStartTodaysMoves-validation.csv' every ::1 using 1:2 with linespoints title "D: old start, today's moves", \
+     'nineteenthSession-oldStartTodaysMovesSeed2-validation.csv' every ::1 using 1:2 with linespoints title "D, seed 2", \
      'nineteenthSession-todaysStartOldMoves-validation.csv' every ::1 using 1:2 with linespoints title "E: today's start, moves to old defaults", \
      0.541849 with lines dashtype 2 lc rgb 'black' title 'shipped policy on this mesher'
