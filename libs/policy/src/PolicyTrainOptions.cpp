@@ -7,6 +7,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/Dictionary.hpp"
 #include "passageMesh/core/InputError.hpp"
 #include "passageMesh/passage/MeshingParameters.hpp"
@@ -140,13 +141,6 @@ std::function<void(const Dictionary&, PolicyTrainOptions&)> readChoice(const Wor
   };
 }
 
-std::string exact(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
-}
-
 const std::vector<Key>& keys() {
   using O = PolicyTrainOptions;
   static const std::vector<Key> k{
@@ -154,9 +148,9 @@ const std::vector<Key>& keys() {
       {"batchEpisodes", readInteger("batchEpisodes", &O::batchEpisodes, 1), [](const O& o) { return std::to_string(o.batchEpisodes); }},
       {"minibatch", readInteger("minibatch", &O::minibatch, 1), [](const O& o) { return std::to_string(o.minibatch); }},
       {"actorLearningRate", readPositive("actorLearningRate", [](O& o) -> double& { return o.learningRates.actor; }, false),
-       [](const O& o) { return exact(o.learningRates.actor); }},
+       [](const O& o) { return formatExact(o.learningRates.actor); }},
       {"criticLearningRate", readPositive("criticLearningRate", [](O& o) -> double& { return o.learningRates.critic; }, false),
-       [](const O& o) { return exact(o.learningRates.critic); }},
+       [](const O& o) { return formatExact(o.learningRates.critic); }},
       {"hiddenLayers",
        [](const Dictionary& d, O& o) {
          std::istringstream in(d.text("hiddenLayers"));
@@ -177,22 +171,22 @@ const std::vector<Key>& keys() {
        },
        [](const O& o) { return NetworkLayout{0, 0, o.hidden, o.leakySlope}.hiddenText(); }},
       {"leakySlope", readPositive("leakySlope", [](O& o) -> double& { return o.leakySlope; }, true),
-       [](const O& o) { return exact(o.leakySlope); }},
+       [](const O& o) { return formatExact(o.leakySlope); }},
       {"criticUpdatesPerEpisode", readInteger("criticUpdatesPerEpisode", &O::criticUpdatesPerEpisode, 1),
        [](const O& o) { return std::to_string(o.criticUpdatesPerEpisode); }},
       {"actorUpdateEvery", readInteger("actorUpdateEvery", &O::actorUpdateEvery, 1), [](const O& o) { return std::to_string(o.actorUpdateEvery); }},
       {"actionBoundPenalty", readPositive("actionBoundPenalty", [](O& o) -> double& { return o.actionBoundPenalty; }, true),
-       [](const O& o) { return exact(o.actionBoundPenalty); }},
+       [](const O& o) { return formatExact(o.actionBoundPenalty); }},
       {"noiseStartSigma", readPositive("noiseStartSigma", [](O& o) -> double& { return o.noiseStartSigma; }, true),
-       [](const O& o) { return exact(o.noiseStartSigma); }},
+       [](const O& o) { return formatExact(o.noiseStartSigma); }},
       {"noiseStartEpisodes", readInteger("noiseStartEpisodes", &O::noiseStartEpisodes, 0), [](const O& o) { return std::to_string(o.noiseStartEpisodes); }},
       {"noiseAmplitude", readPositive("noiseAmplitude", [](O& o) -> double& { return o.noiseAmplitude; }, true),
-       [](const O& o) { return exact(o.noiseAmplitude); }},
+       [](const O& o) { return formatExact(o.noiseAmplitude); }},
       {"noisePeriod", readInteger("noisePeriod", &O::noisePeriod, 1), [](const O& o) { return std::to_string(o.noisePeriod); }},
       {"wideNoiseShare", readPositive("wideNoiseShare", [](O& o) -> double& { return o.wideNoiseShare; }, true),
-       [](const O& o) { return exact(o.wideNoiseShare); }},
+       [](const O& o) { return formatExact(o.wideNoiseShare); }},
       {"wideNoiseSigma", readPositive("wideNoiseSigma", [](O& o) -> double& { return o.wideNoiseSigma; }, false),
-       [](const O& o) { return exact(o.wideNoiseSigma); }},
+       [](const O& o) { return formatExact(o.wideNoiseSigma); }},
       {"bufferCapacity", readInteger("bufferCapacity", &O::bufferCapacity, 1), [](const O& o) { return std::to_string(o.bufferCapacity); }},
       {"validationEvery", readInteger("validationEvery", &O::validationEvery, 1), [](const O& o) { return std::to_string(o.validationEvery); }},
       {"validationPassages", readInteger("validationPassages", &O::validationPassages, 0), [](const O& o) { return std::to_string(o.validationPassages); }},
@@ -205,11 +199,11 @@ const std::vector<Key>& keys() {
       {"edgeRadii", readChoice(edgeRadiusWords, &O::edgeRadii), [](const O& o) { return nameOf(o.edgeRadii); }},
       {"criticModel", readChoice(criticModelWords, &O::criticModel), [](const O& o) { return nameOf(o.criticModel); }},
       {"validityBarrier", readPositive("validityBarrier", [](O& o) -> double& { return o.validityBarrier; }, true),
-       [](const O& o) { return exact(o.validityBarrier); }},
+       [](const O& o) { return formatExact(o.validityBarrier); }},
       {"searchEvery", readInteger("searchEvery", &O::searchEvery, 0), [](const O& o) { return std::to_string(o.searchEvery); }},
       {"searchBudget", readInteger("searchBudget", &O::searchBudget, 2), [](const O& o) { return std::to_string(o.searchBudget); }},
       {"imitationWeight", readPositive("imitationWeight", [](O& o) -> double& { return o.imitationWeight; }, true),
-       [](const O& o) { return exact(o.imitationWeight); }},
+       [](const O& o) { return formatExact(o.imitationWeight); }},
       {"seed", readInteger("seed", &O::seed, 0), [](const O& o) { return std::to_string(o.seed); }},
       {"threads", readInteger("threads", &O::threads, 0), [](const O& o) { return std::to_string(o.threads); }},
   };
@@ -221,7 +215,7 @@ std::string meshDictText(const MeshingParameters& p) {
   std::string text;
   const auto v = p.toArray();
   for (int k = 0; k < MeshingParameters::size; ++k)
-    text += (k ? " " : "") + MeshingParameters::names()[k] + " " + exact(v[k]);
+    text += (k ? " " : "") + MeshingParameters::names()[k] + " " + formatExact(v[k]);
   return text;
 }
 
@@ -278,7 +272,7 @@ PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file) {
   if (options.wideNoiseShare > 1)
     throw InputError(file.string(), dict.line("wideNoiseShare"),
                      "<wideNoiseShare> is a share of the episodes: expected a value in [0, 1], got " +
-                         exact(options.wideNoiseShare));
+                         formatExact(options.wideNoiseShare));
   readActorStartMeshDict(file, dict, options);
   if (options.minibatch > options.bufferCapacity)
     throw InputError(file.string(), dict.line(dict.has("minibatch") ? "minibatch" : "bufferCapacity"),
