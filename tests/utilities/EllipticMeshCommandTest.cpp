@@ -1,6 +1,6 @@
 // ellipticMesh as a user runs it: a case gives mesh/passage.cgns (which cgnscheck accepts,
-// when it is installed) and mesh/passage.vtm; bad input gives a one-line error, a non-zero
-// exit and no mesh files.
+// when it is installed) and mesh/passage.vtm, polished with -polish; bad input gives a
+// one-line error, a non-zero exit and no mesh files.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -10,6 +10,8 @@
 #include "UtilityTestSupport.hpp"
 #include "passageMesh/blade/BladeParametersFile.hpp"
 #include "passageMesh/passage/PassageSampler.hpp"
+#include "passageMesh/quality/MeshQuality.hpp"
+#include "passageMesh/structured/CgnsReader.hpp"
 
 using namespace passageMesh;
 using namespace passageMesh::testData;
@@ -126,4 +128,27 @@ TEST(EllipticMeshCommand, APeriodicBoundaryThroughTheBladeIsAnErrorAndWritesNoth
       << r.err;
   EXPECT_NE(r.out.find("not smoothed"), std::string::npos) << r.out;
   expectNoMesh(dir);
+}
+
+// -polish: the written mesh is the polished one, with the Q the tool prints, above the
+// unpolished mesh's; without it, the mesh is the elliptic one whose Q the polish started from.
+TEST(EllipticMeshCommand, PolishWritesThePolishedMeshWithTheQualityItPrints) {
+  const std::string dict = passageDict("0.85c", "4000");
+  const std::string meshDict = "<meshDict><nT>100</nT></meshDict>";
+  const auto plainDir = caseWith("plain", dict, meshDict), polishDir = caseWith("polish", dict, meshDict);
+  const RunResult plain = runTool(ellipticMesh, plainDir);
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  EXPECT_EQ(plain.out.find("polish:"), std::string::npos) << plain.out;
+  const RunResult polished = runTool(ellipticMesh, polishDir, "-polish");
+  ASSERT_EQ(polished.exitCode, 0) << polished.err;
+  double before = 0, after = 0;
+  const auto line = polished.out.find("polish: Q ");
+  ASSERT_NE(line, std::string::npos) << polished.out;
+  ASSERT_EQ(std::sscanf(polished.out.c_str() + line, "polish: Q %lf -> %lf", &before, &after), 2) << polished.out;
+  EXPECT_NE(polished.out.find(": kept"), std::string::npos) << polished.out;
+  const double qPlain = computeMeshQuality(readCgns(plainDir / "mesh" / "passage.cgns")).Q;
+  const double qPolished = computeMeshQuality(readCgns(polishDir / "mesh" / "passage.cgns")).Q;
+  EXPECT_NEAR(qPlain, before, 1e-6);
+  EXPECT_NEAR(qPolished, after, 1e-6);
+  EXPECT_GT(qPolished, qPlain);
 }

@@ -5,6 +5,7 @@
 
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/mesh/MeshStatistics.hpp"
+#include "passageMesh/polish/OBlockPolish.hpp"
 #include "passageMesh/structured/BlockUniformity.hpp"
 #include "passageMesh/structured/CgnsWriter.hpp"
 #include "passageMesh/structured/VtkWriter.hpp"
@@ -12,10 +13,10 @@
 namespace passageMesh {
 
 HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& dir,
-                         const std::string& tool) {
+                         const std::string& tool, bool polish) {
   const PassageCondition& condition = input.condition;
   const MeshingParameters& parameters = input.parameters;
-  const HohMesh hoh = buildHohMesh(input.blade, condition, parameters);
+  HohMesh hoh = buildHohMesh(input.blade, condition, parameters);
   const EllipticReport& s = hoh.smoothing;
   if (s.iterations > 0)
     std::printf("%s: O-block %d x %d nodes; elliptic smoothing: %d multigrid cycles, "
@@ -47,6 +48,11 @@ HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& 
               wall.angleMeanDeviation, wall.angleMaxDeviation, wall.angleWorstNode,
               blockNonUniformity(hoh.mesh.blocks[0]), blockNonUniformity(hoh.mesh.blocks[2]));
 
+  if (polish) {
+    const OBlockPolishReport p = polishOBlock(hoh.mesh);
+    std::printf("  polish: Q %.6f -> %.6f in %d steps, %.1f s: %s\n", p.qualityBefore, p.qualityAfter,
+                p.iterations, p.seconds, p.kept ? "kept" : "not kept (Q did not rise)");
+  }
   validateStructuredMesh(hoh.mesh);
   std::filesystem::create_directories(dir / "mesh");
   writeFilesAtomically(vtmFileContents(hoh.mesh, dir / "mesh" / "passage.vtm"));

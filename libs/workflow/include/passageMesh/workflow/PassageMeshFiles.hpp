@@ -12,8 +12,9 @@
 namespace passageMesh {
 
 // Lines start with "TOOL: ". Throws std::runtime_error ("the mesh is invalid: ...") and
-// writes nothing when the mesh is invalid.
+// writes nothing when the mesh is invalid. With `polish`, the valid mesh's O-block is
+// polished (OBlockPolish.hpp: kept only where Q rises) before it is written.
 HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& caseDir,
-                         const std::string& tool);
+                         const std::string& tool, bool polish = false);
 
 }  // namespace passageMesh

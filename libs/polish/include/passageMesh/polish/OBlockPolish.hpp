@@ -1,0 +1,53 @@
+#pragma once
+// A final polish of the O-block by optimisation (docs/elliptic-smoothing.md, "Polish"):
+// every node above the held wall rows and below the outer row moves at once so as to
+// minimise, by sparse Levenberg-Marquardt (Ceres),
+//
+//   sum over the cells' corners      (skewWeight |cot(angle)|^skewPower)^2
+//   + sum over neighbouring nodes     (jacobianWeight (ln J1 - ln J2 - t))^2
+//   + sum over nodes, along rows and lines  |smoothWeight (D2 P - D2 P0) / h|^2
+//
+// cot(angle) is zero at a right angle and grows without bound as a corner closes, so the
+// first sum pulls hardest on the most skewed cells (Q_S). J is a node's central-difference
+// Jacobian with Q's neighbour rules across the outer boundary (OBlockNeighbours.hpp); t is
+// 0 between nodes of a row (equal Jacobians: Q_J) and the unpolished mesh's value between
+// rows (the wall clustering stays). D2 P is a node's second difference along a row or a
+// line, D2 P0 the unpolished one, h the spacing there: the angles and the central-difference
+// Jacobians do not see a zig-zag of alternate rows or a crease of the lines, this term
+// does. Minimising a smooth surrogate of the quality, rather than Q itself (minima and
+// maxima, not differentiable), is optimisation-based mesh smoothing as in Knupp,
+// "Achieving finite element mesh quality via optimization of the Jacobian matrix norm and
+// associated quantities", Int. J. Numer. Meth. Eng. 48, 2000. The elliptic solve fixes
+// each line's two ends, so lines lean where their ends do not face each other; the polish
+// spreads that lean over the block instead of leaving it in a band.
+//
+// What stays exactly as it was: the wall row and the next heldWallRows rows (first cell
+// height, wall orthogonality), the outer row (periodic pairs and interface nodes, so the
+// H-blocks), the H-blocks. The polished nodes are kept only when the mesh is valid and its
+// Q (quality library) is higher than before; otherwise the mesh is left untouched.
+#include "passageMesh/structured/StructuredMesh.hpp"
+
+namespace passageMesh {
+
+struct OBlockPolishOptions {
+  int iterations = 25;       // Levenberg-Marquardt steps (docs/elliptic-smoothing.md: 25 vs 60)
+  int heldWallRows = 3;      // rows 1 .. heldWallRows kept with the wall row
+  double skewWeight = 1;
+  double skewPower = 2;
+  double jacobianWeight = 10;
+  double smoothWeight = 10;  // second differences held: 1 or 3 raise Q more but crease the lines
+};
+
+struct OBlockPolishReport {
+  bool kept = false;          // the polished nodes replaced the mesh's
+  int iterations = 0;         // Levenberg-Marquardt steps taken
+  double qualityBefore = -1;  // Q of the mesh as given
+  double qualityAfter = -1;   // Q of the polished nodes (kept or not)
+  double seconds = 0;         // wall time of the polish
+};
+
+// Polishes the O-block ("OBlock") of `mesh` in place. Throws std::invalid_argument when the
+// mesh has no O-block or too few rows to move any (fewer than heldWallRows + 3).
+OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions& options = {});
+
+}  // namespace passageMesh

@@ -1,0 +1,320 @@
+#include "passageMesh/polish/OBlockPolish.hpp"
+
+#include <ceres/ceres.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "passageMesh/quality/MeshQuality.hpp"
+#include "passageMesh/quality/OBlockNeighbours.hpp"
+
+namespace passageMesh {
+
+namespace {
+
+// A node as a residual sees it: a parameter block (2 doubles) plus a translation (the
+// periodic image of a node of the opposite segment).
+struct NodeRef {
+  double* xy = nullptr;
+  double dx = 0, dy = 0;
+};
+
+// A residual over a few distinct parameter blocks; `entry` k reads block index[k] moved
+// by (dx[k], dy[k]) (one block may serve two entries).
+struct Entries {
+  std::vector<int> index;
+  std::vector<double> dx, dy;
+
+  template <typename T>
+  void at(const T* const* q, int k, T& x, T& y) const {
+    const auto e = static_cast<std::size_t>(k);
+    x = q[index[e]][0] + T(dx[e]);
+    y = q[index[e]][1] + T(dy[e]);
+  }
+};
+
+// The corner at entry 0 between the edges to entries 1 and 2 (counter-clockwise):
+// skewWeight cot |cot|^(power - 1). Fails (the step is rejected) where the corner is not
+// convex.
+struct CornerSkew : Entries {
+  double weight = 1, power = 2;
+
+  template <typename T>
+  bool operator()(const T* const* q, T* r) const {
+    T px, py, ax, ay, bx, by;
+    at(q, 0, px, py);
+    at(q, 1, ax, ay);
+    at(q, 2, bx, by);
+    const T e1x = ax - px, e1y = ay - py, e2x = bx - px, e2y = by - py;
+    const T cross = e1x * e2y - e1y * e2x;
+    if (!(cross > T(0))) return false;
+    const T cot = (e1x * e2x + e1y * e2y) / cross;
+    r[0] = T(weight) * cot * pow(cot * cot + T(1e-12), T(0.5 * (power - 1)));
+    return true;
+  }
+};
+
+// jacobianWeight (ln J1 - ln J2 - target). Each J from 4 entries (central differences:
+// (b - a) x (d - c), twice the central x_xi times twice x_eta) or 5 (one-sided in eta:
+// (b - a) x (3 e0 - 4 e1 + e2)), as the quality library computes it.
+struct JacobianRatio : Entries {
+  double weight = 1, target = 0;
+  int first = 4, second = 4;  // entries of J1, then of J2
+
+  template <typename T>
+  T jacobian(const T* const* q, int start, int count) const {
+    T ax, ay, bx, by, ex, ey;
+    at(q, start, ax, ay);
+    at(q, start + 1, bx, by);
+    if (count == 4) {
+      T cx, cy, dx2, dy2;
+      at(q, start + 2, cx, cy);
+      at(q, start + 3, dx2, dy2);
+      ex = dx2 - cx;
+      ey = dy2 - cy;
+    } else {
+      T e0x, e0y, e1x, e1y, e2x, e2y;
+      at(q, start + 2, e0x, e0y);
+      at(q, start + 3, e1x, e1y);
+      at(q, start + 4, e2x, e2y);
+      ex = T(3) * e0x - T(4) * e1x + e2x;
+      ey = T(3) * e0y - T(4) * e1y + e2y;
+    }
+    return (bx - ax) * ey - (by - ay) * ex;
+  }
+
+  template <typename T>
+  bool operator()(const T* const* q, T* r) const {
+    const T j1 = jacobian(q, 0, first), j2 = jacobian(q, first, second);
+    if (!(j1 > T(0)) || !(j2 > T(0))) return false;
+    r[0] = T(weight) * (log(j1) - log(j2) - T(target));
+    return true;
+  }
+};
+
+// smoothWeight ((a - 2 b + c) - (a0 - 2 b0 + c0)) / h: the change of a node's second
+// difference along a row or a line, h the unpolished spacing there. The angles and the
+// central-difference Jacobians do not see a zig-zag of alternate rows or lines (a kinked
+// line can even square some corners); this term keeps the polished grid as smooth as the
+// elliptic one while it bends.
+struct SecondDifference : Entries {
+  double weight = 1, x0 = 0, y0 = 0, spacing = 1;
+
+  template <typename T>
+  bool operator()(const T* const* q, T* r) const {
+    T ax, ay, bx, by, cx, cy;
+    at(q, 0, ax, ay);
+    at(q, 1, bx, by);
+    at(q, 2, cx, cy);
+    r[0] = T(weight / spacing) * (ax - T(2) * bx + cx - T(x0));
+    r[1] = T(weight / spacing) * (ay - T(2) * by + cy - T(y0));
+    return true;
+  }
+};
+
+double stencilJacobian(const std::vector<NodeRef>& s) {
+  auto x = [&](std::size_t k) { return s[k].xy[0] + s[k].dx; };
+  auto y = [&](std::size_t k) { return s[k].xy[1] + s[k].dy; };
+  const double ex = s.size() == 4 ? x(3) - x(2) : 3 * x(2) - 4 * x(3) + x(4);
+  const double ey = s.size() == 4 ? y(3) - y(2) : 3 * y(2) - 4 * y(3) + y(4);
+  return (x(1) - x(0)) * ey - (y(1) - y(0)) * ex;
+}
+
+// The O-block's nodes as parameter blocks (the seam's repeated column left out), the
+// ghost nodes of H-blocks as held blocks, and the residuals between them.
+class PolishProblem {
+ public:
+  PolishProblem(const StructuredMesh& mesh, const OBlockNeighbours& neighbours, const OBlockPolishOptions& options)
+      : mesh_(mesh), o_(mesh.blocks[static_cast<std::size_t>(neighbours.oBlock)]), nb_(neighbours),
+        options_(options), n_(o_.ni - 1), top_(o_.nj - 1) {
+    xy_.resize(static_cast<std::size_t>(2 * n_ * o_.nj));
+    for (int j = 0; j <= top_; ++j)
+      for (int i = 0; i < n_; ++i) {
+        node(i, j)[0] = o_.xAt(i, j);
+        node(i, j)[1] = o_.yAt(i, j);
+      }
+    // Ghosts in H-blocks are held copies (their own storage, so that a block is never both
+    // held and moving).
+    ghosts_.reserve(static_cast<std::size_t>(2 * n_));
+    ghostOf_.assign(static_cast<std::size_t>(n_), nullptr);
+    for (int i = 0; i < n_; ++i) {
+      const OuterNeighbour& g = nb_.outer[static_cast<std::size_t>(i)];
+      if (g.block < 0 || g.block == nb_.oBlock) continue;
+      const StructuredBlock& h = mesh_.blocks[static_cast<std::size_t>(g.block)];
+      ghosts_.push_back(h.x[static_cast<std::size_t>(g.node)] + g.dx);
+      ghosts_.push_back(h.y[static_cast<std::size_t>(g.node)] + g.dy);
+      ghostOf_[static_cast<std::size_t>(i)] = &ghosts_[ghosts_.size() - 2];
+    }
+    build();
+  }
+
+  int solve() {
+    ceres::Solver::Options solver;
+    solver.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+    solver.max_num_iterations = options_.iterations;
+    solver.num_threads = 1;  // the same nodes whatever the machine
+    solver.logging_type = ceres::SILENT;
+    ceres::Solver::Summary summary;
+    ceres::Solve(solver, &problem_, &summary);
+    return static_cast<int>(summary.iterations.size()) - 1;
+  }
+
+  void copyInto(StructuredBlock& o) const {
+    for (int j = 0; j <= top_; ++j)
+      for (int i = 0; i <= n_; ++i) {
+        const double* p = const_cast<PolishProblem*>(this)->node(i, j);
+        o.xAt(i, j) = p[0];
+        o.yAt(i, j) = p[1];
+      }
+  }
+
+ private:
+  double* node(int i, int j) {
+    i = ((i % n_) + n_) % n_;
+    return &xy_[static_cast<std::size_t>(2 * (i + n_ * j))];
+  }
+  bool held(const double* p) const {
+    if (p < xy_.data() || p >= xy_.data() + xy_.size()) return true;  // a ghost copy
+    const auto k = static_cast<int>((p - xy_.data()) / 2);
+    const int j = k / n_;
+    return j <= options_.heldWallRows || j == top_;
+  }
+  // The central-difference stencil of node (i, j) as the quality library takes it; empty
+  // where it cannot be formed.
+  std::vector<NodeRef> stencil(int i, int j) {
+    std::vector<NodeRef> s{{node(i - 1, j)}, {node(i + 1, j)}};
+    if (j < top_) {
+      s.push_back({node(i, j - 1)});
+      s.push_back({node(i, j + 1)});
+      return s;
+    }
+    const OuterNeighbour& g = nb_.outer[static_cast<std::size_t>(((i % n_) + n_) % n_)];
+    if (g.block < 0) {  // a corner or a physical boundary: one-sided
+      s.push_back({node(i, top_)});
+      s.push_back({node(i, top_ - 1)});
+      s.push_back({node(i, top_ - 2)});
+    } else if (g.block == nb_.oBlock) {  // across a periodic segment: a moving node's image
+      const int gi = g.node % o_.ni, gj = g.node / o_.ni;
+      s.push_back({node(i, top_ - 1)});
+      s.push_back({node(gi, gj), g.dx, g.dy});
+    } else {
+      s.push_back({node(i, top_ - 1)});
+      s.push_back({ghostOf_[static_cast<std::size_t>(((i % n_) + n_) % n_)]});
+    }
+    return s;
+  }
+
+  template <typename Functor>
+  void add(Functor* f, const std::vector<std::vector<NodeRef>>& groups, int residuals = 1) {
+    std::vector<double*> blocks;
+    bool moves = false;
+    for (const auto& group : groups)
+      for (const NodeRef& r : group) {
+        const auto it = std::find(blocks.begin(), blocks.end(), r.xy);
+        f->index.push_back(static_cast<int>(it - blocks.begin()));
+        if (it == blocks.end()) blocks.push_back(r.xy);
+        f->dx.push_back(r.dx);
+        f->dy.push_back(r.dy);
+        moves = moves || !held(r.xy);
+      }
+    if (!moves) {  // a constant: nothing to optimise
+      delete f;
+      return;
+    }
+    auto* cost = new ceres::DynamicAutoDiffCostFunction<Functor, 10>(f);
+    for (std::size_t k = 0; k < blocks.size(); ++k) cost->AddParameterBlock(2);
+    cost->SetNumResiduals(residuals);
+    problem_.AddResidualBlock(cost, nullptr, blocks);
+  }
+
+  void addJacobianRatio(int i1, int j1, int i2, int j2, bool keepRatio) {
+    const auto s1 = stencil(i1, j1), s2 = stencil(i2, j2);
+    auto* f = new JacobianRatio;
+    f->weight = options_.jacobianWeight;
+    f->first = static_cast<int>(s1.size());
+    f->second = static_cast<int>(s2.size());
+    const double j1v = stencilJacobian(s1), j2v = stencilJacobian(s2);
+    f->target = keepRatio && j1v > 0 && j2v > 0 ? std::log(j1v) - std::log(j2v) : 0.0;
+    add(f, {s1, s2});
+  }
+
+  void addSecondDifference(const NodeRef& a, const NodeRef& b, const NodeRef& c) {
+    auto* f = new SecondDifference;
+    f->weight = options_.smoothWeight;
+    f->x0 = a.xy[0] - 2 * b.xy[0] + c.xy[0];
+    f->y0 = a.xy[1] - 2 * b.xy[1] + c.xy[1];
+    f->spacing = 0.5 * (std::hypot(a.xy[0] - b.xy[0], a.xy[1] - b.xy[1]) + std::hypot(c.xy[0] - b.xy[0], c.xy[1] - b.xy[1]));
+    add(f, {{a, b, c}}, 2);
+  }
+
+  void build() {
+    // Corners, counter-clockwise in each cell (i clockwise round the blade, j outwards: a
+    // right-handed system, as the mesher builds it).
+    for (int j = 0; j < top_; ++j)
+      for (int i = 0; i < n_; ++i) {
+        const NodeRef a{node(i, j)}, b{node(i + 1, j)}, c{node(i + 1, j + 1)}, d{node(i, j + 1)};
+        for (const auto& corner : {std::vector<NodeRef>{a, b, d}, std::vector<NodeRef>{b, c, a},
+                                   std::vector<NodeRef>{c, d, b}, std::vector<NodeRef>{d, a, c}}) {
+          auto* f = new CornerSkew;
+          f->weight = options_.skewWeight;
+          f->power = options_.skewPower;
+          add(f, {corner});
+        }
+      }
+    // Jacobians: along each row from row 1 to the outer row, across rows up to it.
+    for (int j = 1; j <= top_; ++j)
+      for (int i = 0; i < n_; ++i) {
+        addJacobianRatio(i, j, i + 1, j, false);
+        if (j < top_) addJacobianRatio(i, j, i, j + 1, true);
+      }
+    if (options_.smoothWeight > 0)
+      for (int j = 1; j < top_; ++j)
+        for (int i = 0; i < n_; ++i) {
+          addSecondDifference({node(i - 1, j)}, {node(i, j)}, {node(i + 1, j)});
+          addSecondDifference({node(i, j - 1)}, {node(i, j)}, {node(i, j + 1)});
+        }
+    for (int i = 0; i < n_; ++i)
+      for (int j = 0; j <= top_; ++j)
+        if (held(node(i, j)) && problem_.HasParameterBlock(node(i, j))) problem_.SetParameterBlockConstant(node(i, j));
+    for (std::size_t k = 0; k < ghosts_.size(); k += 2)
+      if (problem_.HasParameterBlock(&ghosts_[k])) problem_.SetParameterBlockConstant(&ghosts_[k]);
+  }
+
+  const StructuredMesh& mesh_;
+  const StructuredBlock& o_;
+  const OBlockNeighbours& nb_;
+  OBlockPolishOptions options_;
+  int n_, top_;
+  std::vector<double> xy_, ghosts_;
+  std::vector<double*> ghostOf_;
+  ceres::Problem problem_;
+};
+
+}  // namespace
+
+OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  OBlockNeighbours neighbours;
+  findOBlockNeighbours(mesh, neighbours);
+  StructuredBlock& o = mesh.blocks[static_cast<std::size_t>(neighbours.oBlock)];
+  if (!neighbours.wrapI) throw std::invalid_argument("polishOBlock: the O-block has no seam connection");
+  if (o.nj < options.heldWallRows + 3 || options.heldWallRows < 1 || o.ni < 4)
+    throw std::invalid_argument("polishOBlock: too few rows to polish (" + std::to_string(o.nj) + ")");
+
+  OBlockPolishReport report;
+  report.qualityBefore = computeMeshQuality(mesh).Q;
+  const StructuredBlock before = o;
+  PolishProblem problem(mesh, neighbours, options);
+  report.iterations = problem.solve();
+  problem.copyInto(o);
+  report.qualityAfter = computeMeshQuality(mesh).Q;
+  report.kept = report.qualityAfter > report.qualityBefore;
+  if (!report.kept) o = before;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace passageMesh

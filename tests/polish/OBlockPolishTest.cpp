@@ -1,0 +1,98 @@
+// The O-block's polish by optimisation: it raises Q on a smoothed HOH mesh, moves only the
+// nodes it may, repeats itself bit for bit, and leaves the mesh untouched where Q would not
+// rise or where there is nothing to polish.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "../quality/QualityTestData.hpp"
+#include "passageMesh/polish/OBlockPolish.hpp"
+#include "passageMesh/quality/MeshQuality.hpp"
+
+using namespace passageMesh;
+using namespace passageMesh::testData;
+
+namespace {
+
+const StructuredBlock& oBlock(const StructuredMesh& mesh) { return mesh.blocks[1]; }
+
+TEST(OBlockPolish, RaisesTheQualityOfASmoothedMeshAndKeepsItValid) {
+  HohMesh hoh = validHohMesh();
+  ASSERT_TRUE(hoh.valid) << hoh.problem;
+  const MeshQuality before = computeMeshQuality(hoh.mesh);
+  const OBlockPolishReport report = polishOBlock(hoh.mesh);
+  const MeshQuality after = computeMeshQuality(hoh.mesh);
+  EXPECT_TRUE(report.kept);
+  EXPECT_GT(report.iterations, 0);
+  EXPECT_EQ(report.qualityBefore, before.Q);
+  EXPECT_EQ(report.qualityAfter, after.Q);
+  EXPECT_TRUE(after.valid) << after.problem;
+  EXPECT_GT(after.Q, before.Q + 1e-3);
+  // The skewest cell is what the polish is for.
+  EXPECT_GT(after.QSmin, before.QSmin);
+}
+
+TEST(OBlockPolish, MovesOnlyTheInteriorRowsOfTheOBlock) {
+  HohMesh hoh = validHohMesh();
+  const StructuredMesh unpolished = hoh.mesh;
+  const OBlockPolishOptions options;
+  ASSERT_TRUE(polishOBlock(hoh.mesh, options).kept);
+  const StructuredBlock &o = oBlock(hoh.mesh), &o0 = oBlock(unpolished);
+  const int top = o.nj - 1;
+  double largestMove = 0;
+  for (int j = 0; j <= top; ++j)
+    for (int i = 0; i < o.ni; ++i) {
+      const bool held = j <= options.heldWallRows || j == top;
+      if (held) {
+        EXPECT_EQ(o.xAt(i, j), o0.xAt(i, j)) << i << " " << j;
+        EXPECT_EQ(o.yAt(i, j), o0.yAt(i, j)) << i << " " << j;
+      } else {
+        largestMove = std::max(largestMove, std::hypot(o.xAt(i, j) - o0.xAt(i, j), o.yAt(i, j) - o0.yAt(i, j)));
+      }
+    }
+  EXPECT_GT(largestMove, 0.0);
+  for (int j = 0; j <= top; ++j) {  // the seam stays closed
+    EXPECT_EQ(o.xAt(0, j), o.xAt(o.ni - 1, j));
+    EXPECT_EQ(o.yAt(0, j), o.yAt(o.ni - 1, j));
+  }
+  for (int b : {0, 2}) {  // the H-blocks
+    EXPECT_EQ(hoh.mesh.blocks[static_cast<std::size_t>(b)].x, unpolished.blocks[static_cast<std::size_t>(b)].x);
+    EXPECT_EQ(hoh.mesh.blocks[static_cast<std::size_t>(b)].y, unpolished.blocks[static_cast<std::size_t>(b)].y);
+  }
+}
+
+TEST(OBlockPolish, GivesTheSameNodesBitForBit) {
+  HohMesh first = validHohMesh(), second = validHohMesh();
+  OBlockPolishOptions fewSteps;
+  fewSteps.iterations = 8;
+  ASSERT_TRUE(polishOBlock(first.mesh, fewSteps).kept);
+  polishOBlock(second.mesh, fewSteps);
+  EXPECT_EQ(oBlock(first.mesh).x, oBlock(second.mesh).x);
+  EXPECT_EQ(oBlock(first.mesh).y, oBlock(second.mesh).y);
+}
+
+TEST(OBlockPolish, LeavesTheMeshUntouchedWhereQDoesNotRise) {
+  HohMesh hoh = validHohMesh();
+  const StructuredMesh unpolished = hoh.mesh;
+  OBlockPolishOptions noSteps;
+  noSteps.iterations = 0;
+  const OBlockPolishReport report = polishOBlock(hoh.mesh, noSteps);
+  EXPECT_FALSE(report.kept);
+  EXPECT_EQ(report.qualityAfter, report.qualityBefore);
+  EXPECT_EQ(oBlock(hoh.mesh).x, oBlock(unpolished).x);
+  EXPECT_EQ(oBlock(hoh.mesh).y, oBlock(unpolished).y);
+}
+
+TEST(OBlockPolish, RefusesAMeshWithNothingToPolish) {
+  HohMesh hoh = validHohMesh();
+  OBlockPolishOptions tooManyHeld;
+  tooManyHeld.heldWallRows = oBlock(hoh.mesh).nj;
+  EXPECT_THROW(polishOBlock(hoh.mesh, tooManyHeld), std::invalid_argument);
+  StructuredMesh noOBlock;
+  noOBlock.blocks = {hoh.mesh.blocks[0]};
+  EXPECT_THROW(polishOBlock(noOBlock), std::invalid_argument);
+}
+
+}  // namespace
