@@ -2,6 +2,7 @@
 
 #include <ceres/ceres.h>
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -34,6 +35,12 @@ struct Entries {
     x = q[index[e]][0] + T(dx[e]);
     y = q[index[e]][1] + T(dy[e]);
   }
+  template <typename T>
+  Eigen::Matrix<T, 2, 1> point(const T* const* q, int k) const {
+    Eigen::Matrix<T, 2, 1> p;
+    at(q, k, p.x(), p.y());
+    return p;
+  }
 };
 
 // The corner at entry 0 between the edges to entries 1 and 2 (counter-clockwise):
@@ -44,14 +51,10 @@ struct CornerSkew : Entries {
 
   template <typename T>
   bool operator()(const T* const* q, T* r) const {
-    T px, py, ax, ay, bx, by;
-    at(q, 0, px, py);
-    at(q, 1, ax, ay);
-    at(q, 2, bx, by);
-    const T e1x = ax - px, e1y = ay - py, e2x = bx - px, e2y = by - py;
-    const T cross = e1x * e2y - e1y * e2x;
+    const auto p = point(q, 0), e1 = (point(q, 1) - p).eval(), e2 = (point(q, 2) - p).eval();
+    const T cross = e1.x() * e2.y() - e1.y() * e2.x();
     if (!(cross > T(0))) return false;
-    const T cot = (e1x * e2x + e1y * e2y) / cross;
+    const T cot = e1.dot(e2) / cross;
     r[0] = T(weight) * cot * pow(cot * cot + T(1e-12), T(0.5 * (power - 1)));
     return true;
   }
@@ -105,12 +108,9 @@ struct SecondDifference : Entries {
 
   template <typename T>
   bool operator()(const T* const* q, T* r) const {
-    T ax, ay, bx, by, cx, cy;
-    at(q, 0, ax, ay);
-    at(q, 1, bx, by);
-    at(q, 2, cx, cy);
-    r[0] = T(weight / spacing) * (ax - T(2) * bx + cx - T(x0));
-    r[1] = T(weight / spacing) * (ay - T(2) * by + cy - T(y0));
+    const auto d2 = (point(q, 0) - T(2) * point(q, 1) + point(q, 2)).eval();
+    r[0] = T(weight / spacing) * (d2.x() - T(x0));
+    r[1] = T(weight / spacing) * (d2.y() - T(y0));
     return true;
   }
 };
