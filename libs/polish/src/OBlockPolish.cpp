@@ -165,25 +165,25 @@ class PolishProblem {
   void copyInto(StructuredBlock& o) const {
     for (int j = 0; j <= top_; ++j)
       for (int i = 0; i <= n_; ++i) {
-        const double* p = const_cast<PolishProblem*>(this)->node(i, j);
+        const double* p = &xy_[index(i, j)];
         o.xAt(i, j) = p[0];
         o.yAt(i, j) = p[1];
       }
   }
 
  private:
-  double* node(int i, int j) {
-    i = ((i % n_) + n_) % n_;
-    return &xy_[static_cast<std::size_t>(2 * (i + n_ * j))];
-  }
+  // Node (i, j) of the O-block, i around the loop (wrapped: the seam column is column 0).
+  int wrap(int i) const { return ((i % n_) + n_) % n_; }
+  std::size_t index(int i, int j) const { return static_cast<std::size_t>(2 * (wrap(i) + n_ * j)); }
+  double* node(int i, int j) { return &xy_[index(i, j)]; }
   bool held(const double* p) const {
     if (p < xy_.data() || p >= xy_.data() + xy_.size()) return true;  // a ghost copy
     const auto k = static_cast<int>((p - xy_.data()) / 2);
     const int j = k / n_;
     return j <= options_.heldWallRows || j == top_;
   }
-  // The central-difference stencil of node (i, j) as the quality library takes it; empty
-  // where it cannot be formed.
+  // The stencil of node (i, j)'s Jacobian as the quality library takes it: 4 entries
+  // (central differences), or 5 where the outer row has no neighbour beyond (one-sided).
   std::vector<NodeRef> stencil(int i, int j) {
     std::vector<NodeRef> s{{node(i - 1, j)}, {node(i + 1, j)}};
     if (j < top_) {
@@ -191,7 +191,8 @@ class PolishProblem {
       s.push_back({node(i, j + 1)});
       return s;
     }
-    const OuterNeighbour& g = nb_.outer[static_cast<std::size_t>(((i % n_) + n_) % n_)];
+    const auto column = static_cast<std::size_t>(wrap(i));
+    const OuterNeighbour& g = nb_.outer[column];
     if (g.block < 0) {  // a corner or a physical boundary: one-sided
       s.push_back({node(i, top_)});
       s.push_back({node(i, top_ - 1)});
@@ -202,7 +203,7 @@ class PolishProblem {
       s.push_back({node(gi, gj), g.dx, g.dy});
     } else {
       s.push_back({node(i, top_ - 1)});
-      s.push_back({ghostOf_[static_cast<std::size_t>(((i % n_) + n_) % n_)]});
+      s.push_back({ghostOf_[column]});
     }
     return s;
   }
