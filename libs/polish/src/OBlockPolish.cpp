@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -151,12 +152,24 @@ class PolishProblem {
     build();
   }
 
-  int solve() {
+  // Runs the Levenberg-Marquardt steps, calling `afterStep` with the nodes of each step in
+  // the parameter blocks; returns the number of steps.
+  int solve(const std::function<void()>& afterStep) {
+    struct Callback : ceres::IterationCallback {
+      const std::function<void()>* f = nullptr;
+      ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+        (*f)();
+        return ceres::SOLVER_CONTINUE;
+      }
+    } callback;
+    callback.f = &afterStep;
     ceres::Solver::Options solver;
     solver.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
     solver.max_num_iterations = options_.iterations;
     solver.num_threads = 1;  // the same nodes whatever the machine
     solver.logging_type = ceres::SILENT;
+    solver.update_state_every_iteration = true;
+    solver.callbacks.push_back(&callback);
     ceres::Solver::Summary summary;
     ceres::Solve(solver, &problem_, &summary);
     return static_cast<int>(summary.iterations.size()) - 1;
@@ -305,15 +318,29 @@ OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions&
   if (o.nj < options.heldWallRows + 3 || options.heldWallRows < 1 || o.ni < 4)
     throw std::invalid_argument("polishOBlock: too few rows to polish (" + std::to_string(o.nj) + ")");
 
+  // The surrogate is not Q: of the steps' nodes, the ones with the highest Q are kept (the
+  // last step's are not always the best), and none unless Q rises.
   OBlockPolishReport report;
-  report.qualityBefore = computeMeshQuality(mesh).Q;
+  report.qualityBefore = report.qualityAfter = computeMeshQuality(mesh).Q;
   const StructuredBlock before = o;
+  StructuredBlock best = o;
+  StructuredMesh trial = mesh;
+  StructuredBlock& trialO = trial.blocks[static_cast<std::size_t>(neighbours.oBlock)];
+  MeshQualityWorkspace workspace;
   PolishProblem problem(mesh, neighbours, options);
-  report.iterations = problem.solve();
-  problem.copyInto(o);
-  report.qualityAfter = computeMeshQuality(mesh).Q;
+  int step = 0;
+  report.iterations = problem.solve([&] {
+    ++step;
+    problem.copyInto(trialO);
+    const double q = computeMeshQuality(trial, workspace).Q;
+    if (q > report.qualityAfter) {
+      report.qualityAfter = q;
+      report.bestStep = step;
+      best = trialO;
+    }
+  });
   report.kept = report.qualityAfter > report.qualityBefore;
-  if (!report.kept) o = before;
+  o = report.kept ? best : before;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

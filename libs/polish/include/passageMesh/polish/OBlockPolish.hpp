@@ -23,8 +23,9 @@
 //
 // What stays exactly as it was: the wall row and the next heldWallRows rows (first cell
 // height, wall orthogonality), the outer row (periodic pairs and interface nodes, so the
-// H-blocks), the H-blocks. The polished nodes are kept only when the mesh is valid and its
-// Q (quality library) is higher than before; otherwise the mesh is left untouched.
+// H-blocks), the H-blocks. Of the steps' nodes, those with the highest Q (quality library:
+// an invalid mesh scores -1) are kept if that Q is above the mesh's own; otherwise the mesh
+// is left untouched.
 #include "passageMesh/structured/StructuredMesh.hpp"
 
 namespace passageMesh {
@@ -41,8 +42,9 @@ struct OBlockPolishOptions {
 struct OBlockPolishReport {
   bool kept = false;          // the polished nodes replaced the mesh's
   int iterations = 0;         // Levenberg-Marquardt steps taken
+  int bestStep = 0;           // the step whose nodes have the highest Q (0: none above the start)
   double qualityBefore = -1;  // Q of the mesh as given
-  double qualityAfter = -1;   // Q of the polished nodes (kept or not)
+  double qualityAfter = -1;   // the highest Q of the steps' nodes (kept), or qualityBefore
   double seconds = 0;         // wall time of the polish
 };
 
