@@ -26,6 +26,8 @@ TEST(OBlockPolish, RaisesTheQualityOfASmoothedMeshAndKeepsItValid) {
   const MeshQuality after = computeMeshQuality(hoh.mesh);
   EXPECT_TRUE(report.kept);
   EXPECT_GT(report.iterations, 0);
+  EXPECT_GE(report.bestStep, 1);
+  EXPECT_LE(report.bestStep, report.iterations);
   EXPECT_EQ(report.qualityBefore, before.Q);
   EXPECT_EQ(report.qualityAfter, after.Q);
   EXPECT_TRUE(after.valid) << after.problem;
@@ -80,6 +82,7 @@ TEST(OBlockPolish, LeavesTheMeshUntouchedWhereQDoesNotRise) {
   noSteps.iterations = 0;
   const OBlockPolishReport report = polishOBlock(hoh.mesh, noSteps);
   EXPECT_FALSE(report.kept);
+  EXPECT_EQ(report.bestStep, 0);
   EXPECT_EQ(report.qualityAfter, report.qualityBefore);
   EXPECT_EQ(oBlock(hoh.mesh).x, oBlock(unpolished).x);
   EXPECT_EQ(oBlock(hoh.mesh).y, oBlock(unpolished).y);
