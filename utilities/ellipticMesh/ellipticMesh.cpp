@@ -3,7 +3,7 @@
 //          system/meshDict.xml (optional: missing keys take etc/meshDictDefaults.xml)
 //   writes mesh/passage.cgns, mesh/passage.vtm + mesh/passage/<block>.vts
 // An invalid (folded) mesh is an error: nothing is written. -polish: the O-block's final
-// polish by optimisation (OBlockPolish.hpp; about a minute at nO = 30000).
+// polish by optimisation (OBlockPolish.hpp; one to two minutes at nO = 30000).
 #include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/passage/PassageCase.hpp"
 #include "passageMesh/workflow/PassageMeshFiles.hpp"
@@ -16,7 +16,7 @@ int main(int argc, char* argv[]) {
                     "Builds the HOH mesh of the case's blade passage (H-block inlet, elliptic\n"
                     "O-block, H-block outlet) and writes mesh/passage.cgns and mesh/passage.vtm.");
     cli.addOptions()("polish", "polish the O-block by optimisation after the elliptic smoothing, kept where "
-                               "Q rises (docs/elliptic-smoothing.md \"Polish\"; about a minute at nO = 30000)");
+                               "Q rises (docs/elliptic-smoothing.md \"Polish\"; one to two minutes at nO = 30000)");
     if (!cli.parse(argc, argv)) return 0;
     meshCaseAndWrite(readPassageCase(cli.caseDir(), "ellipticMesh"), cli.caseDir(), "ellipticMesh",
                      cli.values().count("polish") > 0);
