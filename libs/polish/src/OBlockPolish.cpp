@@ -190,7 +190,8 @@ class PolishProblem {
   std::size_t index(int i, int j) const { return static_cast<std::size_t>(2 * (wrap(i) + n_ * j)); }
   double* node(int i, int j) { return &xy_[index(i, j)]; }
   bool held(const double* p) const {
-    if (p < xy_.data() || p >= xy_.data() + xy_.size()) return true;  // a ghost copy
+    const std::less<const double*> before;  // pointers into different arrays: std::less orders them
+    if (before(p, xy_.data()) || !before(p, xy_.data() + xy_.size())) return true;  // a ghost copy
     const auto k = static_cast<int>((p - xy_.data()) / 2);
     const int j = k / n_;
     return j <= options_.heldWallRows || j == top_;
