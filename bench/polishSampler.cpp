@@ -4,9 +4,9 @@
 //   build/bench/polishSampler [passages=12] [seed=20261203] [first=0] [stride=1]
 // Draws first, first + stride, ... of the `passages` draws (to share them between
 // processes); one CSV line per valid mesh on stdout: draw,nT,nN,Qbefore,Qafter,step,seconds.
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <string>
 
 #include "passageMesh/mesh/HohMesh.hpp"
 #include "passageMesh/passage/PassageSampler.hpp"

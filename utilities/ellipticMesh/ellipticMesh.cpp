@@ -15,8 +15,7 @@ int main(int argc, char* argv[]) {
     CommandLine cli("ellipticMesh",
                     "Builds the HOH mesh of the case's blade passage (H-block inlet, elliptic\n"
                     "O-block, H-block outlet) and writes mesh/passage.cgns and mesh/passage.vtm.");
-    cli.addOptions()("polish", "polish the O-block by optimisation after the elliptic smoothing, kept where "
-                               "Q rises (docs/elliptic-smoothing.md \"Polish\"; one to two minutes at nO = 30000)");
+    cli.addOptions()("polish", polishOptionHelp);
     if (!cli.parse(argc, argv)) return 0;
     meshCaseAndWrite(readPassageCase(cli.caseDir(), "ellipticMesh"), cli.caseDir(), "ellipticMesh",
                      cli.values().count("polish") > 0);

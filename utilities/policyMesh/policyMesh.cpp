@@ -28,8 +28,7 @@ int main(int argc, char* argv[]) {
                     "built, written (mesh/passage.cgns, mesh/passage.vtm) and its quality Q printed.");
     cli.addOptions()("policy", po::value<std::string>(),
                      "the policy's .xml file (default: etc/policy/policy.xml, the shipped policy)")(
-        "polish", "polish the O-block by optimisation after the elliptic smoothing, kept where Q rises "
-                  "(docs/elliptic-smoothing.md \"Polish\"; one to two minutes at nO = 30000)");
+        "polish", polishOptionHelp);
     if (!cli.parse(argc, argv)) return 0;
     const std::filesystem::path policyFile =
         cli.values().count("policy") ? std::filesystem::path(cli.values()["policy"].as<std::string>())

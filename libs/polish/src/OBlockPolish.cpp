@@ -5,8 +5,8 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <chrono>
-#include <functional>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -61,33 +61,27 @@ struct CornerSkew : Entries {
   }
 };
 
-// jacobianWeight (ln J1 - ln J2 - target). Each J from 4 entries (central differences:
-// (b - a) x (d - c), twice the central x_xi times twice x_eta) or 5 (one-sided in eta:
-// (b - a) x (3 e0 - 4 e1 + e2)), as the quality library computes it.
+// J of a node from the points of its stencil, as the quality library computes it (both
+// differences doubled): (b - a) x (d - c) from 4 points (central differences), or
+// (b - a) x (3 e0 - 4 e1 + e2) from 5 (one-sided in eta).
+template <typename T>
+T stencilJacobian(const Eigen::Matrix<T, 2, 1>* p, int count) {
+  const Eigen::Matrix<T, 2, 1> xi = p[1] - p[0];
+  const Eigen::Matrix<T, 2, 1> eta = count == 4 ? (p[3] - p[2]).eval() : (T(3) * p[2] - T(4) * p[3] + p[4]).eval();
+  return xi.x() * eta.y() - xi.y() * eta.x();
+}
+
+// jacobianWeight (ln J1 - ln J2 - target), J1 from the first `first` entries, J2 from the
+// next `second` (stencilJacobian).
 struct JacobianRatio : Entries {
   double weight = 1, target = 0;
-  int first = 4, second = 4;  // entries of J1, then of J2
+  int first = 4, second = 4;
 
   template <typename T>
   T jacobian(const T* const* q, int start, int count) const {
-    T ax, ay, bx, by, ex, ey;
-    at(q, start, ax, ay);
-    at(q, start + 1, bx, by);
-    if (count == 4) {
-      T cx, cy, dx2, dy2;
-      at(q, start + 2, cx, cy);
-      at(q, start + 3, dx2, dy2);
-      ex = dx2 - cx;
-      ey = dy2 - cy;
-    } else {
-      T e0x, e0y, e1x, e1y, e2x, e2y;
-      at(q, start + 2, e0x, e0y);
-      at(q, start + 3, e1x, e1y);
-      at(q, start + 4, e2x, e2y);
-      ex = T(3) * e0x - T(4) * e1x + e2x;
-      ey = T(3) * e0y - T(4) * e1y + e2y;
-    }
-    return (bx - ax) * ey - (by - ay) * ex;
+    Eigen::Matrix<T, 2, 1> p[5];
+    for (int k = 0; k < count; ++k) p[k] = point(q, start + k);
+    return stencilJacobian(p, count);
   }
 
   template <typename T>
@@ -116,12 +110,11 @@ struct SecondDifference : Entries {
   }
 };
 
+// The Jacobian of a stencil of node references as they stand.
 double stencilJacobian(const std::vector<NodeRef>& s) {
-  auto x = [&](std::size_t k) { return s[k].xy[0] + s[k].dx; };
-  auto y = [&](std::size_t k) { return s[k].xy[1] + s[k].dy; };
-  const double ex = s.size() == 4 ? x(3) - x(2) : 3 * x(2) - 4 * x(3) + x(4);
-  const double ey = s.size() == 4 ? y(3) - y(2) : 3 * y(2) - 4 * y(3) + y(4);
-  return (x(1) - x(0)) * ey - (y(1) - y(0)) * ex;
+  Eigen::Vector2d p[5];
+  for (std::size_t k = 0; k < s.size(); ++k) p[k] = {s[k].xy[0] + s[k].dx, s[k].xy[1] + s[k].dy};
+  return stencilJacobian(p, static_cast<int>(s.size()));
 }
 
 // The O-block's nodes as parameter blocks (the seam's repeated column left out), the
@@ -129,7 +122,7 @@ double stencilJacobian(const std::vector<NodeRef>& s) {
 class PolishProblem {
  public:
   PolishProblem(const StructuredMesh& mesh, const OBlockNeighbours& neighbours, const OBlockPolishOptions& options)
-      : mesh_(mesh), o_(mesh.blocks[static_cast<std::size_t>(neighbours.oBlock)]), nb_(neighbours),
+      : o_(mesh.blocks[static_cast<std::size_t>(neighbours.oBlock)]), nb_(neighbours),
         options_(options), n_(o_.ni - 1), top_(o_.nj - 1) {
     xy_.resize(static_cast<std::size_t>(2 * n_ * o_.nj));
     for (int j = 0; j <= top_; ++j)
@@ -144,7 +137,7 @@ class PolishProblem {
     for (int i = 0; i < n_; ++i) {
       const OuterNeighbour& g = nb_.outer[static_cast<std::size_t>(i)];
       if (g.block < 0 || g.block == nb_.oBlock) continue;
-      const StructuredBlock& h = mesh_.blocks[static_cast<std::size_t>(g.block)];
+      const StructuredBlock& h = mesh.blocks[static_cast<std::size_t>(g.block)];
       ghosts_.push_back(h.x[static_cast<std::size_t>(g.node)] + g.dx);
       ghosts_.push_back(h.y[static_cast<std::size_t>(g.node)] + g.dy);
       ghostOf_[static_cast<std::size_t>(i)] = &ghosts_[ghosts_.size() - 2];
@@ -298,7 +291,6 @@ class PolishProblem {
       if (problem_.HasParameterBlock(&ghosts_[k])) problem_.SetParameterBlockConstant(&ghosts_[k]);
   }
 
-  const StructuredMesh& mesh_;
   const StructuredBlock& o_;
   const OBlockNeighbours& nb_;
   OBlockPolishOptions options_;
@@ -323,8 +315,7 @@ OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions&
   // last step's are not always the best), and none unless Q rises.
   OBlockPolishReport report;
   report.qualityBefore = report.qualityAfter = computeMeshQuality(mesh).Q;
-  const StructuredBlock before = o;
-  StructuredBlock best = o;
+  StructuredBlock best;  // the O-block is only written once the best step is known
   StructuredMesh trial = mesh;
   StructuredBlock& trialO = trial.blocks[static_cast<std::size_t>(neighbours.oBlock)];
   MeshQualityWorkspace workspace;
@@ -341,7 +332,7 @@ OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions&
     }
   });
   report.kept = report.qualityAfter > report.qualityBefore;
-  o = report.kept ? best : before;
+  if (report.kept) o = best;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

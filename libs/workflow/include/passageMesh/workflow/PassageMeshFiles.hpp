@@ -17,4 +17,9 @@ namespace passageMesh {
 HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& caseDir,
                          const std::string& tool, bool polish = false);
 
+// The help of the `-polish` option of the tools that call meshCaseAndWrite.
+inline constexpr const char* polishOptionHelp =
+    "polish the O-block by optimisation after the elliptic smoothing, kept where Q rises "
+    "(docs/elliptic-smoothing.md \"Polish\"; one to two minutes at nO = 30000)";
+
 }  // namespace passageMesh
