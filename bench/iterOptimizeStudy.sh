@@ -12,6 +12,14 @@
 # 0.99 of it, the median over the seeds of the evaluations needed (inf: most never do),
 # and the median final best Q.
 #
+# POLISH=1 bench/iterOptimizeStudy.sh ... also polishes every seed's best mesh
+# (`ellipticMesh -polish`, docs/elliptic-smoothing.md "Polish") and writes
+# OUT/<blade>-<method>-polished.csv (seed, best Q, polished Q, step kept) and
+# OUT/<blade>-best-polished-meshDict.xml (the seed of the best polished Q), and prints the
+# best polished Q over the seeds and seed 1's.
+#
+# BLADES="STD10 SIRT" bench/iterOptimizeStudy.sh ... studies only those tutorials.
+#
 # RESCORE=1 bench/iterOptimizeStudy.sh ... runs nothing: it scores the CSVs already in OUT
 # again (after best-ever.csv changed) and redraws the plots.
 set -euo pipefail
@@ -26,7 +34,7 @@ bestEver="$here/docs/iterOptimize/best-ever.csv"
 . "$here/etc/bashrc"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-for blade in LS89 STD10 T106A SIRT; do
+for blade in ${BLADES:-LS89 STD10 T106A SIRT}; do
   table="$out/$blade-$method.csv"
   if [ "${RESCORE:-0}" != 1 ]; then
     base="$work/$blade"
@@ -41,6 +49,11 @@ for blade in LS89 STD10 T106A SIRT; do
       # column of best-so-far Q (the last column of history.csv)
       awk -F, 'NR > 1 { print $NF }' "$run/postProcessing/iterOptimize/history.csv" > "$work/$blade-$1.best"
       cp "$run/system/meshDict.xml" "$work/$blade-$1.meshDict.xml" 2> /dev/null || true
+      if [ "${POLISH:-0}" = 1 ]; then
+        # "  polish: Q a -> b (step k of n), t s: kept" -> "seed,a,b,k"
+        ellipticMesh -case "$run" -polish 2>&1 |
+          sed -n "s/^  polish: Q \([^ ]*\) -> \([^ ]*\) (step \([0-9]*\).*/$1,\1,\2,\3/p" > "$work/$blade-$1.polished" || true
+      fi
     }
     for seed in $(seq 1 "$seeds"); do
       while [ "$(jobs -rp | wc -l)" -ge "$parallel" ]; do wait -n; done
@@ -52,6 +65,14 @@ for blade in LS89 STD10 T106A SIRT; do
       done | sort -g | tail -n 1 | cut -d' ' -f2)
     cp "$work/$blade-$bestSeed.meshDict.xml" "$out/$blade-best-meshDict.xml" 2> /dev/null ||
       echo "iterOptimizeStudy.sh: warning: no meshDict.xml from $blade seed $bestSeed" >&2
+    if [ "${POLISH:-0}" = 1 ]; then
+      polished="$out/$blade-$method-polished.csv"
+      { echo "seed,bestQ,polishedQ,step"; for s in $(seq 1 "$seeds"); do cat "$work/$blade-$s.polished"; done; } > "$polished"
+      bestPolished=$(awk -F, 'NR > 1 && $3 > q { q = $3; s = $1 } END { print s }' "$polished")
+      cp "$work/$blade-$bestPolished.meshDict.xml" "$out/$blade-best-polished-meshDict.xml" 2> /dev/null || true
+      awk -F, -v b="$blade" 'NR > 1 && $3 > q { q = $3; s = $1 } NR > 1 && $1 == 1 { q1 = $3 }
+        END { printf "%s polished: best Q %s (seed %s), seed 1 %s\n", b, q, s, q1 }' "$polished"
+    fi
     paste -d, $(for s in $(seq 1 "$seeds"); do echo "$work/$blade-$s.best"; done) |
       awk -F, -v n="$seeds" 'BEGIN { printf "evaluation"; for (s = 1; s <= n; ++s) printf ",seed%d", s; print ",mean,min,max" }
         { sum = 0; lo = 1e9; hi = -1e9; printf "%d", NR

@@ -75,6 +75,35 @@ TEST(OBlockPolish, GivesTheSameNodesBitForBit) {
   EXPECT_EQ(oBlock(first.mesh).y, oBlock(second.mesh).y);
 }
 
+TEST(OBlockPolish, ReportsEveryStepsQualityAndStopsPatienceStepsAfterTheBest) {
+  HohMesh patient = validHohMesh(), stopping = validHohMesh();
+  OBlockPolishOptions never;
+  never.patience = 0;
+  const OBlockPolishReport all = polishOBlock(patient.mesh, never);
+  ASSERT_EQ(all.stepQuality.size(), static_cast<std::size_t>(all.iterations));
+  ASSERT_GE(all.bestStep, 1);
+  EXPECT_EQ(all.stepQuality[static_cast<std::size_t>(all.bestStep - 1)], all.qualityAfter);
+  EXPECT_EQ(*std::max_element(all.stepQuality.begin(), all.stepQuality.end()), all.qualityAfter);
+
+  OBlockPolishOptions impatient;
+  impatient.patience = 1;
+  const OBlockPolishReport stopped = polishOBlock(stopping.mesh, impatient);
+  // The same steps up to the first after Q has risen that does not beat the best so far.
+  int firstFailure = 0;
+  double best = all.qualityBefore;
+  for (int k = 1; k <= all.iterations && firstFailure == 0; ++k) {
+    const double q = all.stepQuality[static_cast<std::size_t>(k - 1)];
+    if (best > all.qualityBefore && q <= best) firstFailure = k;
+    best = std::max(best, q);
+  }
+  ASSERT_GT(firstFailure, 0) << "Q never stalls once risen: patience cannot show";
+  EXPECT_EQ(stopped.iterations, firstFailure);
+  for (int k = 0; k < stopped.iterations; ++k)
+    EXPECT_EQ(stopped.stepQuality[static_cast<std::size_t>(k)], all.stepQuality[static_cast<std::size_t>(k)]) << k;
+  EXPECT_TRUE(stopped.kept);
+  EXPECT_EQ(stopped.bestStep, firstFailure - 1);
+}
+
 TEST(OBlockPolish, LeavesTheMeshUntouchedWhereQDoesNotRise) {
   HohMesh hoh = validHohMesh();
   const StructuredMesh unpolished = hoh.mesh;

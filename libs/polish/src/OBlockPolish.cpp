@@ -146,13 +146,13 @@ class PolishProblem {
   }
 
   // Runs the Levenberg-Marquardt steps, calling `afterStep` with the nodes of each step in
-  // the parameter blocks; returns the number of steps.
-  int solve(const std::function<void()>& afterStep) {
+  // the parameter blocks (and once before the first) until it returns false; returns the
+  // number of steps.
+  int solve(const std::function<bool()>& afterStep) {
     struct Callback : ceres::IterationCallback {
-      const std::function<void()>* f = nullptr;
+      const std::function<bool()>* f = nullptr;
       ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
-        (*f)();
-        return ceres::SOLVER_CONTINUE;
+        return (*f)() ? ceres::SOLVER_CONTINUE : ceres::SOLVER_TERMINATE_SUCCESSFULLY;
       }
     } callback;
     callback.f = &afterStep;
@@ -320,16 +320,21 @@ OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions&
   StructuredBlock& trialO = trial.blocks[static_cast<std::size_t>(neighbours.oBlock)];
   MeshQualityWorkspace workspace;
   PolishProblem problem(mesh, neighbours, options);
-  int step = 0;
+  // Ceres calls back once before the first step (the nodes as given: Q known) and after each.
+  int step = -1;
   report.iterations = problem.solve([&] {
-    ++step;
+    if (++step == 0) return true;
     problem.copyInto(trialO);
     const double q = computeMeshQuality(trial, workspace).Q;
+    report.stepQuality.push_back(q);
     if (q > report.qualityAfter) {
       report.qualityAfter = q;
       report.bestStep = step;
       best = trialO;
     }
+    // Q often falls for a few steps before it rises above the start: patience counts only
+    // once it has (docs/elliptic-smoothing.md "Polish").
+    return options.patience <= 0 || report.bestStep == 0 || step - report.bestStep < options.patience;
   });
   report.kept = report.qualityAfter > report.qualityBefore;
   if (report.kept) o = best;

@@ -26,12 +26,16 @@
 // H-blocks), the H-blocks. Of the steps' nodes, those with the highest Q (quality library:
 // an invalid mesh scores -1) are kept if that Q is above the mesh's own; otherwise the mesh
 // is left untouched.
+#include <vector>
+
 #include "passageMesh/structured/StructuredMesh.hpp"
 
 namespace passageMesh {
 
 struct OBlockPolishOptions {
   int iterations = 25;       // Levenberg-Marquardt steps (docs/elliptic-smoothing.md: 25 vs 60)
+  int patience = 5;          // once Q has risen, stop after this many steps without a new
+                             // highest Q (0: never)
   int heldWallRows = 3;      // rows 1 .. heldWallRows kept with the wall row
   double skewWeight = 1;
   double skewPower = 2;
@@ -41,11 +45,13 @@ struct OBlockPolishOptions {
 
 struct OBlockPolishReport {
   bool kept = false;          // the polished nodes replaced the mesh's
-  int iterations = 0;         // Levenberg-Marquardt steps taken
+  int iterations = 0;         // Levenberg-Marquardt steps taken (fewer than asked: converged, or
+                              // `patience` steps without a new highest Q)
   int bestStep = 0;           // the step whose nodes have the highest Q (0: none above the start)
   double qualityBefore = -1;  // Q of the mesh as given
   double qualityAfter = -1;   // the highest Q of the steps' nodes (kept), or qualityBefore
   double seconds = 0;         // wall time of the polish
+  std::vector<double> stepQuality;  // Q of each step's nodes, in order (-1: invalid)
 };
 
 // Polishes the O-block ("OBlock") of `mesh` in place. Throws std::invalid_argument when the
