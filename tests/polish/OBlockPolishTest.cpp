@@ -26,6 +26,7 @@ TEST(OBlockPolish, RaisesTheQualityOfASmoothedMeshAndKeepsItValid) {
   const MeshQuality after = computeMeshQuality(hoh.mesh);
   EXPECT_TRUE(report.kept);
   EXPECT_GT(report.iterations, 0);
+  EXPECT_EQ(report.stepQuality.size(), static_cast<std::size_t>(report.iterations));
   EXPECT_GE(report.bestStep, 1);
   EXPECT_LE(report.bestStep, report.iterations);
   EXPECT_EQ(report.qualityBefore, before.Q);
@@ -77,8 +78,9 @@ TEST(OBlockPolish, GivesTheSameNodesBitForBit) {
 
 TEST(OBlockPolish, ReportsEveryStepsQualityAndStopsPatienceStepsAfterTheBest) {
   HohMesh patient = validHohMesh(), stopping = validHohMesh();
-  OBlockPolishOptions never;
+  OBlockPolishOptions never;  // one pass (no windows), so that the steps can be compared
   never.patience = 0;
+  never.windowRounds = 0;
   const OBlockPolishReport all = polishOBlock(patient.mesh, never);
   ASSERT_EQ(all.stepQuality.size(), static_cast<std::size_t>(all.iterations));
   ASSERT_GE(all.bestStep, 1);
@@ -87,6 +89,7 @@ TEST(OBlockPolish, ReportsEveryStepsQualityAndStopsPatienceStepsAfterTheBest) {
 
   OBlockPolishOptions impatient;
   impatient.patience = 1;
+  impatient.windowRounds = 0;
   const OBlockPolishReport stopped = polishOBlock(stopping.mesh, impatient);
   // The same steps up to the first after Q has risen that does not beat the best so far.
   int firstFailure = 0;
@@ -102,6 +105,34 @@ TEST(OBlockPolish, ReportsEveryStepsQualityAndStopsPatienceStepsAfterTheBest) {
     EXPECT_EQ(stopped.stepQuality[static_cast<std::size_t>(k)], all.stepQuality[static_cast<std::size_t>(k)]) << k;
   EXPECT_TRUE(stopped.kept);
   EXPECT_EQ(stopped.bestStep, firstFailure - 1);
+}
+
+TEST(OBlockPolish, ThenPolishesAWindowRoundTheWorstCellAndRaisesQFurther) {
+  HohMesh whole = validHohMesh(), windowed = validHohMesh();
+  OBlockPolishOptions wholeOnly, oneWindow;
+  wholeOnly.windowRounds = 0;
+  oneWindow.windowRounds = 1;
+  oneWindow.windowHalfWidth = 5;
+  const OBlockPolishReport first = polishOBlock(whole.mesh, wholeOnly);
+  const OBlockPolishReport second = polishOBlock(windowed.mesh, oneWindow);
+  EXPECT_EQ(first.passes, 1);
+  ASSERT_GT(second.qualityAfter, first.qualityAfter) << "the window raised no step's Q";
+  EXPECT_EQ(second.passes, 2);  // the worst Q_S cell's window raised Q: no Q_J window
+  EXPECT_EQ(second.qualityAfter, computeMeshQuality(windowed.mesh).Q);
+  // The window's nodes moved, no other: within 5 of the worst Q_S cell after the first pass.
+  const CellLocation worst = computeMeshQuality(whole.mesh).worstQS;
+  const StructuredBlock &a = oBlock(whole.mesh), &b = oBlock(windowed.mesh);
+  const int n = a.ni - 1;
+  int moved = 0;
+  for (int j = 0; j < a.nj; ++j)
+    for (int i = 0; i < a.ni; ++i) {
+      if (a.xAt(i, j) == b.xAt(i, j) && a.yAt(i, j) == b.yAt(i, j)) continue;
+      ++moved;
+      const int di = std::abs(i % n - worst.i);
+      EXPECT_LE(std::min(di, n - di), 5) << i << " " << j;
+      EXPECT_LE(std::abs(j - worst.j), 5) << i << " " << j;
+    }
+  EXPECT_GT(moved, 0);
 }
 
 TEST(OBlockPolish, LeavesTheMeshUntouchedWhereQDoesNotRise) {

@@ -117,13 +117,20 @@ double stencilJacobian(const std::vector<NodeRef>& s) {
   return stencilJacobian(p, static_cast<int>(s.size()));
 }
 
+// The nodes that may move: within halfWidth of node (i, j) in both indices (i round the
+// loop), or all when halfWidth is 0.
+struct PolishWindow {
+  int i = 0, j = 0, halfWidth = 0;
+};
+
 // The O-block's nodes as parameter blocks (the seam's repeated column left out), the
 // ghost nodes of H-blocks as held blocks, and the residuals between them.
 class PolishProblem {
  public:
-  PolishProblem(const StructuredMesh& mesh, const OBlockNeighbours& neighbours, const OBlockPolishOptions& options)
+  PolishProblem(const StructuredMesh& mesh, const OBlockNeighbours& neighbours, const OBlockPolishOptions& options,
+                const PolishWindow& window = {})
       : o_(mesh.blocks[static_cast<std::size_t>(neighbours.oBlock)]), nb_(neighbours),
-        options_(options), n_(o_.ni - 1), top_(o_.nj - 1) {
+        options_(options), window_(window), n_(o_.ni - 1), top_(o_.nj - 1) {
     xy_.resize(static_cast<std::size_t>(2 * n_ * o_.nj));
     for (int j = 0; j <= top_; ++j)
       for (int i = 0; i < n_; ++i) {
@@ -187,8 +194,24 @@ class PolishProblem {
     if (before(p, xy_.data()) || !before(p, xy_.data() + xy_.size())) return true;  // a ghost copy
     const auto k = static_cast<int>((p - xy_.data()) / 2);
     const int j = k / n_;
-    return j <= options_.heldWallRows || j == top_;
+    if (j <= options_.heldWallRows || j == top_) return true;
+    return window_.halfWidth > 0 && (ringDistance(k % n_, window_.i) > window_.halfWidth ||
+                                     std::abs(j - window_.j) > window_.halfWidth);
   }
+  int ringDistance(int a, int b) const {
+    const int d = std::abs(wrap(a) - wrap(b));
+    return std::min(d, n_ - d);
+  }
+  // The columns and rows whose residuals can reach a moving node (all, or the window's
+  // with a margin of the widest residual's reach).
+  std::vector<int> columns() const {
+    std::vector<int> c;
+    const int reach = window_.halfWidth + 4;
+    for (int i = 0; i < n_; ++i)
+      if (window_.halfWidth == 0 || ringDistance(i, window_.i) <= reach) c.push_back(i);
+    return c;
+  }
+  bool rowReaches(int j) const { return window_.halfWidth == 0 || std::abs(j - window_.j) <= window_.halfWidth + 4; }
   // The stencil of node (i, j)'s Jacobian as the quality library takes it: 4 entries
   // (central differences), or 5 where the outer row has no neighbour beyond (one-sided).
   std::vector<NodeRef> stencil(int i, int j) {
@@ -261,8 +284,10 @@ class PolishProblem {
   void build() {
     // Corners, counter-clockwise in each cell (i clockwise round the blade, j outwards: a
     // right-handed system, as the mesher builds it).
+    const std::vector<int> near = columns();
     for (int j = 0; j < top_; ++j)
-      for (int i = 0; i < n_; ++i) {
+      for (int i : near) {
+        if (!rowReaches(j)) continue;
         const NodeRef a{node(i, j)}, b{node(i + 1, j)}, c{node(i + 1, j + 1)}, d{node(i, j + 1)};
         for (const auto& corner : {std::vector<NodeRef>{a, b, d}, std::vector<NodeRef>{b, c, a},
                                    std::vector<NodeRef>{c, d, b}, std::vector<NodeRef>{d, a, c}}) {
@@ -274,13 +299,15 @@ class PolishProblem {
       }
     // Jacobians: along each row from row 1 to the outer row, across rows up to it.
     for (int j = 1; j <= top_; ++j)
-      for (int i = 0; i < n_; ++i) {
+      for (int i : near) {
+        if (!rowReaches(j)) continue;
         addJacobianRatio(i, j, i + 1, j, false);
         if (j < top_) addJacobianRatio(i, j, i, j + 1, true);
       }
     if (options_.smoothWeight > 0)
       for (int j = 1; j < top_; ++j)
-        for (int i = 0; i < n_; ++i) {
+        for (int i : near) {
+          if (!rowReaches(j)) continue;
           addSecondDifference({node(i - 1, j)}, {node(i, j)}, {node(i + 1, j)});
           addSecondDifference({node(i, j - 1)}, {node(i, j)}, {node(i, j + 1)});
         }
@@ -294,11 +321,45 @@ class PolishProblem {
   const StructuredBlock& o_;
   const OBlockNeighbours& nb_;
   OBlockPolishOptions options_;
+  PolishWindow window_;
   int n_, top_;
   std::vector<double> xy_, ghosts_;
   std::vector<double*> ghostOf_;
   ceres::Problem problem_;
 };
+
+// One Levenberg-Marquardt run over the window's nodes. The surrogate is not Q: of the
+// steps' nodes, the ones with the highest Q are kept (the last step's are not always the
+// best), and none unless Q rises above report.qualityAfter; returns whether it rose.
+bool polishPass(StructuredMesh& mesh, const OBlockNeighbours& neighbours, const OBlockPolishOptions& options,
+                const PolishWindow& window, OBlockPolishReport& report) {
+  StructuredBlock& o = mesh.blocks[static_cast<std::size_t>(neighbours.oBlock)];
+  const double start = report.qualityAfter;
+  StructuredBlock best;  // the O-block is only written once the best step is known
+  StructuredMesh trial = mesh;
+  StructuredBlock& trialO = trial.blocks[static_cast<std::size_t>(neighbours.oBlock)];
+  MeshQualityWorkspace workspace;
+  PolishProblem problem(mesh, neighbours, options, window);
+  // Ceres calls back once before the first step (the nodes as given: Q known) and after each.
+  int step = -1, bestStep = 0;
+  report.iterations += problem.solve([&] {
+    if (++step == 0) return true;
+    problem.copyInto(trialO);
+    const double q = computeMeshQuality(trial, workspace).Q;
+    report.stepQuality.push_back(q);
+    if (q > report.qualityAfter) {
+      report.qualityAfter = q;
+      report.bestStep = static_cast<int>(report.stepQuality.size());
+      bestStep = step;
+      best = trialO;
+    }
+    // Q often falls for a few steps before it rises above the start: patience counts only
+    // once it has (docs/elliptic-smoothing.md "Polish").
+    return options.patience <= 0 || bestStep == 0 || step - bestStep < options.patience;
+  });
+  if (report.qualityAfter > start) o = best;
+  return report.qualityAfter > start;
+}
 
 }  // namespace
 
@@ -306,38 +367,28 @@ OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions&
   const auto start = std::chrono::steady_clock::now();
   OBlockNeighbours neighbours;
   findOBlockNeighbours(mesh, neighbours);
-  StructuredBlock& o = mesh.blocks[static_cast<std::size_t>(neighbours.oBlock)];
+  const StructuredBlock& o = mesh.blocks[static_cast<std::size_t>(neighbours.oBlock)];
   if (!neighbours.wrapI) throw std::invalid_argument("polishOBlock: the O-block has no seam connection");
   if (o.nj < options.heldWallRows + 3 || options.heldWallRows < 1 || o.ni < 4)
     throw std::invalid_argument("polishOBlock: too few rows to polish (" + std::to_string(o.nj) + ")");
 
-  // The surrogate is not Q: of the steps' nodes, the ones with the highest Q are kept (the
-  // last step's are not always the best), and none unless Q rises.
   OBlockPolishReport report;
   report.qualityBefore = report.qualityAfter = computeMeshQuality(mesh).Q;
-  StructuredBlock best;  // the O-block is only written once the best step is known
-  StructuredMesh trial = mesh;
-  StructuredBlock& trialO = trial.blocks[static_cast<std::size_t>(neighbours.oBlock)];
-  MeshQualityWorkspace workspace;
-  PolishProblem problem(mesh, neighbours, options);
-  // Ceres calls back once before the first step (the nodes as given: Q known) and after each.
-  int step = -1;
-  report.iterations = problem.solve([&] {
-    if (++step == 0) return true;
-    problem.copyInto(trialO);
-    const double q = computeMeshQuality(trial, workspace).Q;
-    report.stepQuality.push_back(q);
-    if (q > report.qualityAfter) {
-      report.qualityAfter = q;
-      report.bestStep = step;
-      best = trialO;
+  polishPass(mesh, neighbours, options, {}, report);
+  ++report.passes;
+  // Then windows round the worst cell: Q is made of minima, and a window's few thousand
+  // nodes factorise in milliseconds where the whole block takes seconds a step.
+  for (int round = 0; round < options.windowRounds && options.windowHalfWidth > 0; ++round) {
+    const MeshQuality q = computeMeshQuality(mesh);
+    bool raised = false;
+    for (const CellLocation& worst : {q.worstQS, q.worstQJ}) {
+      ++report.passes;
+      if ((raised = polishPass(mesh, neighbours, options, {worst.i, worst.j, options.windowHalfWidth}, report))) break;
     }
-    // Q often falls for a few steps before it rises above the start: patience counts only
-    // once it has (docs/elliptic-smoothing.md "Polish").
-    return options.patience <= 0 || report.bestStep == 0 || step - report.bestStep < options.patience;
-  });
+    if (!raised) break;
+  }
   report.kept = report.qualityAfter > report.qualityBefore;
-  if (report.kept) o = best;
+  if (!report.kept) report.bestStep = 0;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

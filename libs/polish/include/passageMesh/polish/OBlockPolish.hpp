@@ -12,7 +12,7 @@
 // Jacobian with Q's neighbour rules across the outer boundary (OBlockNeighbours.hpp); t is
 // 0 between nodes of a row (equal Jacobians: Q_J) and the unpolished mesh's value between
 // rows (the wall clustering stays). D2 P is a node's second difference along a row or a
-// line, D2 P0 the unpolished one, h the spacing there: the angles and the central-difference
+// line, D2 P0 the one the pass starts from, h the spacing there: the angles and the central-difference
 // Jacobians do not see a zig-zag of alternate rows or a crease of the lines, this term
 // does. Minimising a smooth surrogate of the quality, rather than Q itself (minima and
 // maxima, not differentiable), is optimisation-based mesh smoothing as in Knupp,
@@ -23,9 +23,11 @@
 //
 // What stays exactly as it was: the wall row and the next heldWallRows rows (first cell
 // height, wall orthogonality), the outer row (periodic pairs and interface nodes, so the
-// H-blocks), the H-blocks. Of the steps' nodes, those with the highest Q (quality library:
-// an invalid mesh scores -1) are kept if that Q is above the mesh's own; otherwise the mesh
-// is left untouched.
+// H-blocks), the H-blocks. Of each pass's steps, the nodes with the highest Q (quality
+// library: an invalid mesh scores -1) are kept if that Q is above the pass's start;
+// otherwise the pass leaves the mesh untouched. The first pass moves the whole block; the
+// next ones (OBlockPolishOptions::windowRounds) only a window round the worst cell, where Q's
+// minima are, at a small fraction of the cost.
 #include <vector>
 
 #include "passageMesh/structured/StructuredMesh.hpp"
@@ -41,17 +43,24 @@ struct OBlockPolishOptions {
   double skewPower = 2;
   double jacobianWeight = 10;
   double smoothWeight = 10;  // second differences held: 1 or 3 raise Q more but crease the lines
+  // After the pass over the whole O-block, up to windowRounds passes over the nodes within
+  // windowHalfWidth (in i and in j) of the worst Q_S cell, or where that does not raise Q,
+  // of the worst Q_J cell; they stop at the first round that raises neither (0: none).
+  int windowRounds = 20;
+  int windowHalfWidth = 30;
 };
 
 struct OBlockPolishReport {
   bool kept = false;          // the polished nodes replaced the mesh's
-  int iterations = 0;         // Levenberg-Marquardt steps taken (fewer than asked: converged, or
-                              // `patience` steps without a new highest Q)
-  int bestStep = 0;           // the step whose nodes have the highest Q (0: none above the start)
+  int passes = 0;             // Levenberg-Marquardt runs: the whole block, then the windows
+  int iterations = 0;         // their steps in all (a run stops before `iterations` when it
+                              // converges, or `patience` steps after its highest Q)
+  int bestStep = 0;           // the step (counted over all passes) whose nodes have the
+                              // highest Q (0: none above the start)
   double qualityBefore = -1;  // Q of the mesh as given
   double qualityAfter = -1;   // the highest Q of the steps' nodes (kept), or qualityBefore
   double seconds = 0;         // wall time of the polish
-  std::vector<double> stepQuality;  // Q of each step's nodes, in order (-1: invalid)
+  std::vector<double> stepQuality;  // Q of each step's nodes, in order, over all passes (-1: invalid)
 };
 
 // Polishes the O-block ("OBlock") of `mesh` in place. Throws std::invalid_argument when the
