@@ -50,7 +50,7 @@ for blade in ${BLADES:-LS89 STD10 T106A SIRT}; do
       awk -F, 'NR > 1 { print $NF }' "$run/postProcessing/iterOptimize/history.csv" > "$work/$blade-$1.best"
       cp "$run/system/meshDict.xml" "$work/$blade-$1.meshDict.xml" 2> /dev/null || true
       if [ "${POLISH:-0}" = 1 ]; then
-        # "  polish: Q a -> b (step k of n), t s: kept" -> "seed,a,b,k"
+        # "  polish: Q a -> b (step k of n in p passes), t s: kept" -> "seed,a,b,k"
         ellipticMesh -case "$run" -polish 2>&1 |
           sed -n "s/^  polish: Q \([^ ]*\) -> \([^ ]*\) (step \([0-9]*\).*/$1,\1,\2,\3/p" > "$work/$blade-$1.polished" || true
       fi

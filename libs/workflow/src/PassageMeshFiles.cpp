@@ -50,8 +50,9 @@ HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& 
 
   if (polish) {
     const OBlockPolishReport p = polishOBlock(hoh.mesh);
-    std::printf("  polish: Q %.6f -> %.6f (step %d of %d), %.1f s: %s\n", p.qualityBefore, p.qualityAfter,
-                p.bestStep, p.iterations, p.seconds, p.kept ? "kept" : "not kept (no step raised Q)");
+    std::printf("  polish: Q %.6f -> %.6f (step %d of %d in %d passes), %.1f s: %s\n", p.qualityBefore,
+                p.qualityAfter, p.bestStep, p.iterations, p.passes, p.seconds,
+                p.kept ? "kept" : "not kept (no step raised Q)");
   }
   validateStructuredMesh(hoh.mesh);
   std::filesystem::create_directories(dir / "mesh");
