@@ -156,6 +156,7 @@ class PolishProblem {
   // the parameter blocks (and once before the first) until it returns false; returns the
   // number of steps.
   int solve(const std::function<bool()>& afterStep) {
+    if (problem_.NumResidualBlocks() == 0) return 0;  // a window with no node free to move
     struct Callback : ceres::IterationCallback {
       const std::function<bool()>* f = nullptr;
       ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
@@ -172,7 +173,7 @@ class PolishProblem {
     solver.callbacks.push_back(&callback);
     ceres::Solver::Summary summary;
     ceres::Solve(solver, &problem_, &summary);
-    return static_cast<int>(summary.iterations.size()) - 1;
+    return std::max(0, static_cast<int>(summary.iterations.size()) - 1);
   }
 
   void copyInto(StructuredBlock& o) const {
@@ -202,16 +203,27 @@ class PolishProblem {
     const int d = std::abs(wrap(a) - wrap(b));
     return std::min(d, n_ - d);
   }
-  // The columns and rows whose residuals can reach a moving node (all, or the window's
-  // with a margin of the widest residual's reach).
+  // A residual built at column i and row j reads nodes up to 2 columns and 2 rows away (a
+  // node Jacobian's stencil beside the other's), except through a periodic image.
+  static constexpr int residualReach = 2;
+  // The columns whose residuals can reach a moving node: all, or the window's with that
+  // margin. The outer row's Jacobians read the images of nodes on the opposite periodic
+  // segment, far away in i: their residuals are built for every column (add() drops those
+  // that move nothing).
   std::vector<int> columns() const {
     std::vector<int> c;
-    const int reach = window_.halfWidth + 4;
     for (int i = 0; i < n_; ++i)
-      if (window_.halfWidth == 0 || ringDistance(i, window_.i) <= reach) c.push_back(i);
+      if (window_.halfWidth == 0 || ringDistance(i, window_.i) <= window_.halfWidth + residualReach) c.push_back(i);
     return c;
   }
-  bool rowReaches(int j) const { return window_.halfWidth == 0 || std::abs(j - window_.j) <= window_.halfWidth + 4; }
+  std::vector<int> everyColumn() const {
+    std::vector<int> c(static_cast<std::size_t>(n_));
+    for (int i = 0; i < n_; ++i) c[static_cast<std::size_t>(i)] = i;
+    return c;
+  }
+  bool rowReaches(int j) const {
+    return window_.halfWidth == 0 || std::abs(j - window_.j) <= window_.halfWidth + residualReach;
+  }
   // The stencil of node (i, j)'s Jacobian as the quality library takes it: 4 entries
   // (central differences), or 5 where the outer row has no neighbour beyond (one-sided).
   std::vector<NodeRef> stencil(int i, int j) {
@@ -297,10 +309,12 @@ class PolishProblem {
           add(f, {corner});
         }
       }
-    // Jacobians: along each row from row 1 to the outer row, across rows up to it.
+    // Jacobians: along each row from row 1 to the outer row, across rows up to it (those
+    // that reach the outer row for every column: periodic images).
+    const std::vector<int> all = everyColumn();
     for (int j = 1; j <= top_; ++j)
-      for (int i : near) {
-        if (!rowReaches(j)) continue;
+      for (int i : j >= top_ - 1 ? all : near) {
+        if (!rowReaches(j) && j < top_ - 1) continue;
         addJacobianRatio(i, j, i + 1, j, false);
         if (j < top_) addJacobianRatio(i, j, i, j + 1, true);
       }
@@ -380,10 +394,14 @@ OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions&
   // nodes factorise in milliseconds where the whole block takes seconds a step.
   for (int round = 0; round < options.windowRounds && options.windowHalfWidth > 0; ++round) {
     const MeshQuality q = computeMeshQuality(mesh);
+    // The worst Q_S cell's window, then where that raises no step's Q the worst Q_J cell's
+    // (unless it is the same cell).
+    const CellLocation worst[] = {q.worstQS, q.worstQJ};
+    const int tries = q.worstQJ.i == q.worstQS.i && q.worstQJ.j == q.worstQS.j ? 1 : 2;
     bool raised = false;
-    for (const CellLocation& worst : {q.worstQS, q.worstQJ}) {
+    for (int k = 0; k < tries && !raised; ++k) {
       ++report.passes;
-      if ((raised = polishPass(mesh, neighbours, options, {worst.i, worst.j, options.windowHalfWidth}, report))) break;
+      raised = polishPass(mesh, neighbours, options, {worst[k].i, worst[k].j, options.windowHalfWidth}, report);
     }
     if (!raised) break;
   }

@@ -10,8 +10,8 @@
 // cot(angle) is zero at a right angle and grows without bound as a corner closes, so the
 // first sum pulls hardest on the most skewed cells (Q_S). J is a node's central-difference
 // Jacobian with Q's neighbour rules across the outer boundary (OBlockNeighbours.hpp); t is
-// 0 between nodes of a row (equal Jacobians: Q_J) and the unpolished mesh's value between
-// rows (the wall clustering stays). D2 P is a node's second difference along a row or a
+// 0 between nodes of a row (equal Jacobians: Q_J) and, between rows, the value at the
+// pass's start (the wall clustering stays). D2 P is a node's second difference along a row or a
 // line, D2 P0 the one the pass starts from, h the spacing there: the angles and the central-difference
 // Jacobians do not see a zig-zag of alternate rows or a crease of the lines, this term
 // does. Minimising a smooth surrogate of the quality, rather than Q itself (minima and
@@ -35,7 +35,7 @@
 namespace passageMesh {
 
 struct OBlockPolishOptions {
-  int iterations = 25;       // Levenberg-Marquardt steps (docs/elliptic-smoothing.md: 25 vs 60)
+  int iterations = 25;       // Levenberg-Marquardt steps a pass (docs/elliptic-smoothing.md: 25 vs 60)
   int patience = 5;          // once Q has risen, stop after this many steps without a new
                              // highest Q (0: never)
   int heldWallRows = 3;      // rows 1 .. heldWallRows kept with the wall row
@@ -43,9 +43,10 @@ struct OBlockPolishOptions {
   double skewPower = 2;
   double jacobianWeight = 10;
   double smoothWeight = 10;  // second differences held: 1 or 3 raise Q more but crease the lines
-  // After the pass over the whole O-block, up to windowRounds passes over the nodes within
-  // windowHalfWidth (in i and in j) of the worst Q_S cell, or where that does not raise Q,
-  // of the worst Q_J cell; they stop at the first round that raises neither (0: none).
+  // After the pass over the whole O-block, up to windowRounds rounds of a pass over the
+  // nodes within windowHalfWidth (in i round the loop, and in j) of the worst Q_S cell's
+  // first node (i, j), or where that does not raise Q, of the worst Q_J cell's; they stop
+  // at the first round that raises neither (0: no windows).
   int windowRounds = 20;
   int windowHalfWidth = 30;
 };
