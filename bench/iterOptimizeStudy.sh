@@ -68,10 +68,11 @@ for blade in ${BLADES:-LS89 STD10 T106A SIRT}; do
     if [ "${POLISH:-0}" = 1 ]; then
       polished="$out/$blade-$method-polished.csv"
       { echo "seed,bestQ,polishedQ,step"; for s in $(seq 1 "$seeds"); do cat "$work/$blade-$s.polished"; done; } > "$polished"
-      bestPolished=$(awk -F, 'NR > 1 && $3 > q { q = $3; s = $1 } END { print s }' "$polished")
-      cp "$work/$blade-$bestPolished.meshDict.xml" "$out/$blade-best-polished-meshDict.xml" 2> /dev/null || true
-      awk -F, -v b="$blade" 'NR > 1 && $3 > q { q = $3; s = $1 } NR > 1 && $1 == 1 { q1 = $3 }
-        END { printf "%s polished: best Q %s (seed %s), seed 1 %s\n", b, q, s, q1 }' "$polished"
+      # "best Q, its seed, seed 1's Q"
+      read -r polishedQ polishedSeed seed1Q < <(awk -F, 'NR > 1 && $3 > q { q = $3; s = $1 } NR > 1 && $1 == 1 { q1 = $3 }
+        END { print q, s, q1 }' "$polished")
+      cp "$work/$blade-$polishedSeed.meshDict.xml" "$out/$blade-best-polished-meshDict.xml" 2> /dev/null || true
+      echo "$blade polished: best Q $polishedQ (seed $polishedSeed), seed 1 $seed1Q"
     fi
     paste -d, $(for s in $(seq 1 "$seeds"); do echo "$work/$blade-$s.best"; done) |
       awk -F, -v n="$seeds" 'BEGIN { printf "evaluation"; for (s = 1; s <= n; ++s) printf ",seed%d", s; print ",mean,min,max" }

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-
+#include <filesystem>
 #include <string>
 
 #include "TutorialPassage.hpp"

@@ -206,23 +206,14 @@ class PolishProblem {
   // A residual built at column i and row j reads nodes up to 2 columns and 2 rows away (a
   // node Jacobian's stencil beside the other's), except through a periodic image.
   static constexpr int residualReach = 2;
-  // The columns whose residuals can reach a moving node: all, or the window's with that
-  // margin. The outer row's Jacobians read the images of nodes on the opposite periodic
-  // segment, far away in i: their residuals are built for every column (add() drops those
-  // that move nothing).
-  std::vector<int> columns() const {
-    std::vector<int> c;
-    for (int i = 0; i < n_; ++i)
-      if (window_.halfWidth == 0 || ringDistance(i, window_.i) <= window_.halfWidth + residualReach) c.push_back(i);
-    return c;
-  }
-  std::vector<int> everyColumn() const {
-    std::vector<int> c(static_cast<std::size_t>(n_));
-    for (int i = 0; i < n_; ++i) c[static_cast<std::size_t>(i)] = i;
-    return c;
-  }
-  bool rowReaches(int j) const {
-    return window_.halfWidth == 0 || std::abs(j - window_.j) <= window_.halfWidth + residualReach;
+  // Whether residuals built at column i and row j can read a moving node: always for the
+  // whole block, else within the window plus that margin. Those that read periodic images
+  // (the outer row's Jacobians: nodes of the opposite segment, far away in i) are built
+  // for every column; add() drops whatever moves nothing.
+  bool mayReach(int i, int j, bool readsImages = false) const {
+    if (window_.halfWidth == 0 || readsImages) return true;
+    const int reach = window_.halfWidth + residualReach;
+    return ringDistance(i, window_.i) <= reach && std::abs(j - window_.j) <= reach;
   }
   // The stencil of node (i, j)'s Jacobian as the quality library takes it: 4 entries
   // (central differences), or 5 where the outer row has no neighbour beyond (one-sided).
@@ -296,10 +287,9 @@ class PolishProblem {
   void build() {
     // Corners, counter-clockwise in each cell (i clockwise round the blade, j outwards: a
     // right-handed system, as the mesher builds it).
-    const std::vector<int> near = columns();
     for (int j = 0; j < top_; ++j)
-      for (int i : near) {
-        if (!rowReaches(j)) continue;
+      for (int i = 0; i < n_; ++i) {
+        if (!mayReach(i, j)) continue;
         const NodeRef a{node(i, j)}, b{node(i + 1, j)}, c{node(i + 1, j + 1)}, d{node(i, j + 1)};
         for (const auto& corner : {std::vector<NodeRef>{a, b, d}, std::vector<NodeRef>{b, c, a},
                                    std::vector<NodeRef>{c, d, b}, std::vector<NodeRef>{d, a, c}}) {
@@ -311,17 +301,16 @@ class PolishProblem {
       }
     // Jacobians: along each row from row 1 to the outer row, across rows up to it (those
     // that reach the outer row for every column: periodic images).
-    const std::vector<int> all = everyColumn();
     for (int j = 1; j <= top_; ++j)
-      for (int i : j >= top_ - 1 ? all : near) {
-        if (!rowReaches(j) && j < top_ - 1) continue;
+      for (int i = 0; i < n_; ++i) {
+        if (!mayReach(i, j, j >= top_ - 1)) continue;
         addJacobianRatio(i, j, i + 1, j, false);
         if (j < top_) addJacobianRatio(i, j, i, j + 1, true);
       }
     if (options_.smoothWeight > 0)
       for (int j = 1; j < top_; ++j)
-        for (int i : near) {
-          if (!rowReaches(j)) continue;
+        for (int i = 0; i < n_; ++i) {
+          if (!mayReach(i, j)) continue;
           addSecondDifference({node(i - 1, j)}, {node(i, j)}, {node(i + 1, j)});
           addSecondDifference({node(i, j - 1)}, {node(i, j)}, {node(i, j + 1)});
         }
@@ -406,7 +395,6 @@ OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions&
     if (!raised) break;
   }
   report.kept = report.qualityAfter > report.qualityBefore;
-  if (!report.kept) report.bestStep = 0;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

@@ -20,6 +20,6 @@ HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& 
 // The help of the `-polish` option of the tools that call meshCaseAndWrite.
 inline constexpr const char* polishOptionHelp =
     "polish the O-block by optimisation after the elliptic smoothing, kept where Q rises "
-    "(docs/elliptic-smoothing.md \"Polish\"; one to two minutes at nO = 30000)";
+    "(docs/elliptic-smoothing.md \"Polish\"; half a minute to a minute and a half at nO = 30000)";
 
 }  // namespace passageMesh
