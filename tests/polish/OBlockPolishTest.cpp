@@ -6,8 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "../quality/QualityTestData.hpp"
+#include "passageMesh/blade/BladeFit.hpp"
+#include "passageMesh/blade/BladePoints.hpp"
+#include "passageMesh/core/PointFile.hpp"
+#include "passageMesh/passage/PassageCondition.hpp"
 #include "passageMesh/polish/OBlockPolish.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
 
@@ -40,6 +45,7 @@ TEST(OBlockPolish, RaisesTheQualityOfASmoothedMeshAndKeepsItValid) {
 TEST(OBlockPolish, MovesOnlyTheInteriorRowsOfTheOBlock) {
   HohMesh hoh = validHohMesh();
   const StructuredMesh unpolished = hoh.mesh;
+  // A blade with round edges: no wall node turns by sharpEdgeAngle, so rows 1-3 stay.
   const OBlockPolishOptions options;
   ASSERT_TRUE(polishOBlock(hoh.mesh, options).kept);
   const StructuredBlock &o = oBlock(hoh.mesh), &o0 = oBlock(unpolished);
@@ -112,7 +118,7 @@ TEST(OBlockPolish, ThenPolishesAWindowRoundTheWorstCellAndRaisesQFurther) {
   OBlockPolishOptions wholeOnly, oneWindow;
   wholeOnly.windowRounds = 0;
   oneWindow.windowRounds = 1;
-  oneWindow.windowHalfWidth = 5;
+  oneWindow.windowHalfWidths = {5};
   const OBlockPolishReport first = polishOBlock(whole.mesh, wholeOnly);
   const OBlockPolishReport second = polishOBlock(windowed.mesh, oneWindow);
   EXPECT_EQ(first.passes, 1);
@@ -133,6 +139,67 @@ TEST(OBlockPolish, ThenPolishesAWindowRoundTheWorstCellAndRaisesQFurther) {
       EXPECT_LE(std::abs(j - worst.j), 5) << i << " " << j;
     }
   EXPECT_GT(moved, 0);
+}
+
+// STD10's blade (its tutorial's points, fitted) has a sharp trailing edge: at its tip the
+// wall turns by far more than 40 degrees between neighbouring nodes, and the tip's node
+// Jacobian (its neighbours on either side of the wedge) makes the worst Q_J cell.
+TEST(OBlockPolish, FreesRowsTwoAndThreeBesideASharpEdgesTipAndRaisesItsQJ) {
+  const auto points = orderBladePoints(readPointFile(tutorialPoints("STD10"))).points;
+  const BladeParameters std10 = fitBlade(points).parameters;
+  PassageCondition condition = readPassageDict(tutorialPoints("STD10").parent_path().parent_path() / "system" /
+                                               "passageDict.xml", std10.chord);
+  condition.nO = 160 * 40;
+  MeshingParameters parameters = MeshingParameters::defaults(std10.chord);
+  parameters.nT = 160;
+  HohMesh hoh = buildHohMesh(BladeShape(std10), condition, parameters);
+  ASSERT_TRUE(hoh.valid) << hoh.problem;
+  const StructuredMesh unpolished = hoh.mesh;
+  const StructuredBlock& o0 = oBlock(unpolished);
+  const int n = o0.ni - 1;
+  // The columns within 2 of a wall node where the wall turns by more than 40 degrees.
+  std::vector<bool> nearTip(static_cast<std::size_t>(n), false);
+  int tips = 0;
+  for (int i = 0; i < n; ++i) {
+    const int a = (i + n - 1) % n, c = (i + 1) % n;
+    const double ux = o0.xAt(i, 0) - o0.xAt(a, 0), uy = o0.yAt(i, 0) - o0.yAt(a, 0);
+    const double vx = o0.xAt(c, 0) - o0.xAt(i, 0), vy = o0.yAt(c, 0) - o0.yAt(i, 0);
+    const double turn = std::abs(std::atan2(ux * vy - uy * vx, ux * vx + uy * vy)) * 180 / M_PI;
+    if (turn <= 40) continue;
+    ++tips;
+    for (int d = -2; d <= 2; ++d) nearTip[static_cast<std::size_t>((i + d + n) % n)] = true;
+  }
+  ASSERT_GT(tips, 0) << "the test blade has no sharp edge";
+  const CellLocation worst = computeMeshQuality(unpolished).worstQJ;
+  ASSERT_EQ(worst.j, 0);
+  ASSERT_TRUE(nearTip[static_cast<std::size_t>(worst.i)]) << "the worst Q_J cell is not at the tip";
+
+  // With only the whole-block pass (rows 1-3 held everywhere) the tip's Q_J stays; the
+  // windows (the narrow one reaches the tip) free rows 2-3 there and raise it.
+  HohMesh wholeOnly = hoh;
+  OBlockPolishOptions noWindows;
+  noWindows.windowRounds = 0;
+  polishOBlock(wholeOnly.mesh, noWindows);
+  const OBlockPolishOptions options;
+  const OBlockPolishReport report = polishOBlock(hoh.mesh, options);
+  ASSERT_TRUE(report.kept);
+  const MeshQuality whole = computeMeshQuality(wholeOnly.mesh), windowed = computeMeshQuality(hoh.mesh);
+  EXPECT_EQ(whole.QJmin, computeMeshQuality(unpolished).QJmin);
+  EXPECT_GT(windowed.QJmin, whole.QJmin + 0.01);
+  EXPECT_GT(windowed.Q, whole.Q);
+  // Row 1 never moves (first cell height, wall angle), rows 2-3 only beside the tip.
+  const StructuredBlock& o = oBlock(hoh.mesh);
+  int movedNearTip = 0;
+  for (int j = 0; j <= options.heldWallRows; ++j)
+    for (int i = 0; i < o.ni; ++i) {
+      const bool moved = o.xAt(i, j) != o0.xAt(i, j) || o.yAt(i, j) != o0.yAt(i, j);
+      if (j <= 1 || !nearTip[static_cast<std::size_t>(i % n)]) {
+        EXPECT_FALSE(moved) << i << " " << j;
+      } else if (moved) {
+        ++movedNearTip;
+      }
+    }
+  EXPECT_GT(movedNearTip, 0);
 }
 
 TEST(OBlockPolish, LeavesTheMeshUntouchedWhereQDoesNotRise) {

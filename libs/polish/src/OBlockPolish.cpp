@@ -149,6 +149,7 @@ class PolishProblem {
       ghosts_.push_back(h.y[static_cast<std::size_t>(g.node)] + g.dy);
       ghostOf_[static_cast<std::size_t>(i)] = &ghosts_[ghosts_.size() - 2];
     }
+    markSharpEdges();
     build();
   }
 
@@ -190,12 +191,33 @@ class PolishProblem {
   int wrap(int i) const { return ((i % n_) + n_) % n_; }
   std::size_t index(int i, int j) const { return static_cast<std::size_t>(2 * (wrap(i) + n_ * j)); }
   double* node(int i, int j) { return &xy_[index(i, j)]; }
+  // Where the wall turns by more than sharpEdgeAngle at a node (a sharp edge's tip), that
+  // node's Jacobian is a fraction of its neighbours' (about the sine of the half wedge
+  // angle: its two neighbours lie on either side of the corner), and Q_J's minimum sits
+  // there. Rows 2 .. heldWallRows of the columns within sharpEdgeColumns of it may move:
+  // the tip's one-sided Jacobian reads row 2, while row 1 (first cell height, wall angle)
+  // stays. Only in windows: freed in the whole-block pass they send it down another path,
+  // lower on some meshes (docs/elliptic-smoothing.md "Sharp edges").
+  void markSharpEdges() {
+    nearSharpEdge_.assign(static_cast<std::size_t>(n_), false);
+    if (window_.halfWidth == 0) return;
+    const double cosLimit = std::cos(options_.sharpEdgeAngle * M_PI / 180);
+    for (int i = 0; i < n_; ++i) {
+      const Eigen::Vector2d a(node(i - 1, 0)[0], node(i - 1, 0)[1]), b(node(i, 0)[0], node(i, 0)[1]),
+          c(node(i + 1, 0)[0], node(i + 1, 0)[1]);
+      if ((b - a).normalized().dot((c - b).normalized()) >= cosLimit) continue;
+      for (int d = -options_.sharpEdgeColumns; d <= options_.sharpEdgeColumns; ++d)
+        nearSharpEdge_[static_cast<std::size_t>(wrap(i + d))] = true;
+    }
+  }
+
   bool held(const double* p) const {
     const std::less<const double*> before;  // pointers into different arrays: std::less orders them
     if (before(p, xy_.data()) || !before(p, xy_.data() + xy_.size())) return true;  // a ghost copy
     const auto k = static_cast<int>((p - xy_.data()) / 2);
     const int j = k / n_;
-    if (j <= options_.heldWallRows || j == top_) return true;
+    if (j <= 1 || j == top_) return true;
+    if (j <= options_.heldWallRows && !nearSharpEdge_[static_cast<std::size_t>(k % n_)]) return true;
     return window_.halfWidth > 0 && (ringDistance(k % n_, window_.i) > window_.halfWidth ||
                                      std::abs(j - window_.j) > window_.halfWidth);
   }
@@ -216,8 +238,11 @@ class PolishProblem {
     return ringDistance(i, window_.i) <= reach && std::abs(j - window_.j) <= reach;
   }
   // The stencil of node (i, j)'s Jacobian as the quality library takes it: 4 entries
-  // (central differences), or 5 where the outer row has no neighbour beyond (one-sided).
+  // (central differences), or 5 where it is one-sided in j (the wall row, and the outer
+  // row where it has no neighbour beyond).
   std::vector<NodeRef> stencil(int i, int j) {
+    if (j == 0)  // one-sided from the wall: xi reversed so that J comes out as 3 e0 - 4 e1 + e2 wants
+      return {{node(i + 1, 0)}, {node(i - 1, 0)}, {node(i, 0)}, {node(i, 1)}, {node(i, 2)}};
     std::vector<NodeRef> s{{node(i - 1, j)}, {node(i + 1, j)}};
     if (j < top_) {
       s.push_back({node(i, j - 1)});
@@ -299,9 +324,10 @@ class PolishProblem {
           add(f, {corner});
         }
       }
-    // Jacobians: along each row from row 1 to the outer row, across rows up to it (those
-    // that reach the outer row for every column: periodic images).
-    for (int j = 1; j <= top_; ++j)
+    // Jacobians: along each row from the wall row to the outer row, across rows up to it
+    // (those that reach the outer row for every column: periodic images). The wall row's
+    // read rows 0-2, so they move only beside a sharp edge's tip.
+    for (int j = 0; j <= top_; ++j)
       for (int i = 0; i < n_; ++i) {
         if (!mayReach(i, j, j >= top_ - 1)) continue;
         addJacobianRatio(i, j, i + 1, j, false);
@@ -326,6 +352,7 @@ class PolishProblem {
   OBlockPolishOptions options_;
   PolishWindow window_;
   int n_, top_;
+  std::vector<bool> nearSharpEdge_;  // per column: rows 2 .. heldWallRows move
   std::vector<double> xy_, ghosts_;
   std::vector<double*> ghostOf_;
   ceres::Problem problem_;
@@ -381,17 +408,18 @@ OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions&
   ++report.passes;
   // Then windows round the worst cell: Q is made of minima, and a window's few thousand
   // nodes factorise in milliseconds where the whole block takes seconds a step.
-  for (int round = 0; round < options.windowRounds && options.windowHalfWidth > 0; ++round) {
+  for (int round = 0; round < options.windowRounds; ++round) {
     const MeshQuality q = computeMeshQuality(mesh);
     // The worst Q_S cell's window, then where that raises no step's Q the worst Q_J cell's
-    // (unless it is the same cell).
+    // (unless it is the same cell); each width in turn, widest first.
     const CellLocation worst[] = {q.worstQS, q.worstQJ};
-    const int tries = q.worstQJ.i == q.worstQS.i && q.worstQJ.j == q.worstQS.j ? 1 : 2;
+    const int cells = q.worstQJ.i == q.worstQS.i && q.worstQJ.j == q.worstQS.j ? 1 : 2;
     bool raised = false;
-    for (int k = 0; k < tries && !raised; ++k) {
-      ++report.passes;
-      raised = polishPass(mesh, neighbours, options, {worst[k].i, worst[k].j, options.windowHalfWidth}, report);
-    }
+    for (const int halfWidth : options.windowHalfWidths)
+      for (int k = 0; k < cells && !raised && halfWidth > 0; ++k) {
+        ++report.passes;
+        raised = polishPass(mesh, neighbours, options, {worst[k].i, worst[k].j, halfWidth}, report);
+      }
     if (!raised) break;
   }
   report.kept = report.qualityAfter > report.qualityBefore;

@@ -22,8 +22,8 @@
 // spreads that lean over the block instead of leaving it in a band.
 //
 // What stays exactly as it was: the wall row and the next heldWallRows rows (first cell
-// height, wall orthogonality), the outer row (periodic pairs and interface nodes, so the
-// H-blocks), the H-blocks. Of each pass's steps, the nodes with the highest Q (quality
+// height, wall orthogonality; in the window passes, beside a sharp edge's tip, only row 1),
+// the outer row (periodic pairs and interface nodes, so the H-blocks), the H-blocks. Of each pass's steps, the nodes with the highest Q (quality
 // library: an invalid mesh scores -1) are kept if that Q is above the pass's start;
 // otherwise the pass leaves the mesh untouched. The first pass moves the whole block; the
 // next ones (OBlockPolishOptions::windowRounds) only a window round the worst cell, where Q's
@@ -38,17 +38,23 @@ struct OBlockPolishOptions {
   int iterations = 25;       // Levenberg-Marquardt steps a pass (docs/elliptic-smoothing.md: 25 vs 60)
   int patience = 5;          // once Q has risen, stop after this many steps without a new
                              // highest Q (0: never)
-  int heldWallRows = 3;      // rows 1 .. heldWallRows kept with the wall row
+  int heldWallRows = 3;      // rows 1 .. heldWallRows kept with the wall row, except that
+                             // in the window passes rows 2 .. heldWallRows move within
+                             // sharpEdgeColumns columns of a wall node where the wall turns
+                             // by more than sharpEdgeAngle degrees (a sharp edge's tip)
+  double sharpEdgeAngle = 40;  // [degrees]
+  int sharpEdgeColumns = 2;
   double skewWeight = 1;
   double skewPower = 2;
   double jacobianWeight = 10;
   double smoothWeight = 10;  // second differences held: 1 or 3 raise Q more but crease the lines
   // After the pass over the whole O-block, up to windowRounds rounds of a pass over the
-  // nodes within windowHalfWidth (in i round the loop, and in j) of the worst Q_S cell's
-  // first node (i, j), or where that does not raise Q, of the worst Q_J cell's; they stop
-  // at the first round that raises neither (0: no windows).
+  // nodes within a half width (in i round the loop, and in j) of the worst Q_S cell's
+  // first node (i, j), or where that does not raise Q, of the worst Q_J cell's; the widths
+  // in turn, widest first (a wide window spreads a change, a narrow one reaches a single
+  // cell the wide one trades away); they stop at the first round that raises none.
   int windowRounds = 20;
-  int windowHalfWidth = 30;
+  std::vector<int> windowHalfWidths{30, 5};
 };
 
 struct OBlockPolishReport {
