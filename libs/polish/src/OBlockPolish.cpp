@@ -415,11 +415,14 @@ OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions&
     const CellLocation worst[] = {q.worstQS, q.worstQJ};
     const int cells = q.worstQJ.i == q.worstQS.i && q.worstQJ.j == q.worstQS.j ? 1 : 2;
     bool raised = false;
-    for (const int halfWidth : options.windowHalfWidths)
-      for (int k = 0; k < cells && !raised && halfWidth > 0; ++k) {
+    for (std::size_t w = 0; w < options.windowHalfWidths.size() && !raised; ++w) {
+      const int halfWidth = options.windowHalfWidths[w];
+      if (halfWidth <= 0) continue;  // 0 would be the whole block again
+      for (int k = 0; k < cells && !raised; ++k) {
         ++report.passes;
         raised = polishPass(mesh, neighbours, options, {worst[k].i, worst[k].j, halfWidth}, report);
       }
+    }
     if (!raised) break;
   }
   report.kept = report.qualityAfter > report.qualityBefore;
