@@ -157,7 +157,9 @@ TEST(OBlockPolish, FreesRowsTwoAndThreeBesideASharpEdgesTipAndRaisesItsQJ) {
   const StructuredMesh unpolished = hoh.mesh;
   const StructuredBlock& o0 = oBlock(unpolished);
   const int n = o0.ni - 1;
-  // The columns within 2 of a wall node where the wall turns by more than 40 degrees.
+  const OBlockPolishOptions options;  // sharpEdgeAngle 40 degrees, sharpEdgeColumns 2
+  // The columns within sharpEdgeColumns of a wall node where the wall turns by more than
+  // sharpEdgeAngle.
   std::vector<bool> nearTip(static_cast<std::size_t>(n), false);
   int tips = 0;
   for (int i = 0; i < n; ++i) {
@@ -165,9 +167,10 @@ TEST(OBlockPolish, FreesRowsTwoAndThreeBesideASharpEdgesTipAndRaisesItsQJ) {
     const double ux = o0.xAt(i, 0) - o0.xAt(a, 0), uy = o0.yAt(i, 0) - o0.yAt(a, 0);
     const double vx = o0.xAt(c, 0) - o0.xAt(i, 0), vy = o0.yAt(c, 0) - o0.yAt(i, 0);
     const double turn = std::abs(std::atan2(ux * vy - uy * vx, ux * vx + uy * vy)) * 180 / M_PI;
-    if (turn <= 40) continue;
+    if (turn <= options.sharpEdgeAngle) continue;
     ++tips;
-    for (int d = -2; d <= 2; ++d) nearTip[static_cast<std::size_t>((i + d + n) % n)] = true;
+    for (int d = -options.sharpEdgeColumns; d <= options.sharpEdgeColumns; ++d)
+      nearTip[static_cast<std::size_t>((i + d + n) % n)] = true;
   }
   ASSERT_GT(tips, 0) << "the test blade has no sharp edge";
   const CellLocation worst = computeMeshQuality(unpolished).worstQJ;
@@ -180,7 +183,6 @@ TEST(OBlockPolish, FreesRowsTwoAndThreeBesideASharpEdgesTipAndRaisesItsQJ) {
   OBlockPolishOptions noWindows;
   noWindows.windowRounds = 0;
   polishOBlock(wholeOnly.mesh, noWindows);
-  const OBlockPolishOptions options;
   const OBlockPolishReport report = polishOBlock(hoh.mesh, options);
   ASSERT_TRUE(report.kept);
   const MeshQuality whole = computeMeshQuality(wholeOnly.mesh), windowed = computeMeshQuality(hoh.mesh);

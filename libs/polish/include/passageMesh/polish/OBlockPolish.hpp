@@ -23,9 +23,10 @@
 //
 // What stays exactly as it was: the wall row and the next heldWallRows rows (first cell
 // height, wall orthogonality; in the window passes, beside a sharp edge's tip, only row 1),
-// the outer row (periodic pairs and interface nodes, so the H-blocks), the H-blocks. Of each pass's steps, the nodes with the highest Q (quality
-// library: an invalid mesh scores -1) are kept if that Q is above the pass's start;
-// otherwise the pass leaves the mesh untouched. The first pass moves the whole block; the
+// the outer row (periodic pairs and interface nodes, so the H-blocks), the H-blocks. Of
+// each pass's steps, the nodes with the highest Q (quality library: an invalid mesh
+// scores -1) are kept if that Q is above the pass's start; otherwise the pass leaves the
+// mesh untouched. The first pass moves the whole block; the
 // next ones (OBlockPolishOptions::windowRounds) only a window round the worst cell, where Q's
 // minima are, at a small fraction of the cost.
 #include <vector>
