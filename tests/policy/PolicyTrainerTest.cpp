@@ -308,3 +308,42 @@ TEST(PolicyTrainer, StartingFromAnotherRunsCheckpointKeepsItsWeightsAndEpisodes)
   EXPECT_EQ(continued.episode(), 128);
   EXPECT_EQ(continued.searchSummary().searches, 2);  // after episodes 96 and 128
 }
+
+// -startFrom may switch between the two validity critics (the same tensors, the quality
+// read through a sigmoid or not): the actor carries over unchanged. A plain resume with the
+// other model, and a start from the reward critic (other tensors), are refused.
+TEST(PolicyTrainer, StartingFromAnotherRunMaySwitchTheQualityNetworkToBounded) {
+  const ToyEnvironment toy(24, 8, 3, 0.05);
+  ThreadRollouts rollouts(1);
+  const auto dir = testData::tempFolder("policyTrainerStartBounded");
+  PolicyTrainOptions unbounded = smallRun(64);
+  unbounded.criticModel = CriticModel::validityAndQuality;
+  PolicyTrainer base(unbounded, toy, rollouts);
+  ASSERT_TRUE(base.run(nullptr, {}));
+  base.saveCheckpoint(dir / "unbounded.pt");
+  PolicyTrainOptions rewardOnly = smallRun(64);
+  PolicyTrainer rewardBase(rewardOnly, toy, rollouts);
+  ASSERT_TRUE(rewardBase.run(nullptr, {}));
+  rewardBase.saveCheckpoint(dir / "reward.pt");
+
+  PolicyTrainOptions bounded = smallRun(128);
+  bounded.criticModel = CriticModel::validityAndBoundedQuality;
+  EXPECT_NE(resumeError(bounded, dir / "unbounded.pt").find("validityAndQuality"), std::string::npos);
+  PolicyTrainer continued(bounded, toy, rollouts);
+  continued.resume(dir / "unbounded.pt", false);
+  EXPECT_EQ(continued.episode(), 64);
+  EXPECT_EQ(fingerprint(continued.learner(), 24, 8).first, fingerprint(base.learner(), 24, 8).first);
+  const Eigen::VectorXd q = fingerprint(continued.learner(), 24, 8).second;
+  EXPECT_NE(q, fingerprint(base.learner(), 24, 8).second);  // the quality is read through the sigmoid
+  EXPECT_TRUE(q.allFinite());
+  ASSERT_TRUE(continued.run(nullptr, {}));
+  EXPECT_EQ(continued.episode(), 128);
+
+  PolicyTrainer fromReward(bounded, toy, rollouts);
+  try {
+    fromReward.resume(dir / "reward.pt", false);
+    ADD_FAILURE() << "a reward critic's checkpoint was accepted by a validity critic";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the checkpoint's networks are"), std::string::npos) << e.what();
+  }
+}

@@ -328,7 +328,14 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
     if (!value.isString() || value.toStringRef() != checkpointFormat)
       throw InputError(name, 0, "not a policyTrain checkpoint (format line missing or different)");
     archive.read("layout", value);
-    if (value.toStringRef() != layoutText(learner_.layout()))
+    // A continuation (-startFrom) may switch between the two validity critics: they hold the
+    // same tensors and differ only in whether the quality output is read through a sigmoid.
+    NetworkLayout other = learner_.layout();
+    if (!sameSettings && hasValidity(other.critic))
+      other.critic = other.critic == CriticModel::validityAndQuality ? CriticModel::validityAndBoundedQuality
+                                                                      : CriticModel::validityAndQuality;
+    if (value.toStringRef() != layoutText(learner_.layout()) &&
+        (sameSettings || !hasValidity(other.critic) || value.toStringRef() != layoutText(other)))
       throw InputError(name, 0, "the checkpoint's networks are " + value.toStringRef() +
                                     " (state, action, [hidden], slope[, critic model]), this run's " +
                                     layoutText(learner_.layout()));
