@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -215,6 +216,53 @@ TEST(OBlockPolish, LeavesTheMeshUntouchedWhereQDoesNotRise) {
   EXPECT_EQ(report.qualityAfter, report.qualityBefore);
   EXPECT_EQ(oBlock(hoh.mesh).x, oBlock(unpolished).x);
   EXPECT_EQ(oBlock(hoh.mesh).y, oBlock(unpolished).y);
+}
+
+// ellipticMesh prints a line a pass and stops on Ctrl-C: every pass is logged and reported
+// as it ends; a stop asked for after the first pass leaves that pass's nodes, the same as
+// an uninterrupted run's after its first pass; a stop asked for before leaves the mesh as
+// it was.
+TEST(OBlockPolish, LogsEveryPassAndStopsWhenAskedWithTheBestNodesSoFar) {
+  HohMesh full = validHohMesh(), stopped = validHohMesh(), never = validHohMesh();
+  const StructuredMesh unpolished = never.mesh;
+  OBlockPolishOptions options;
+  options.windowRounds = 2;
+  options.windowHalfWidths = {5};
+  std::vector<std::size_t> logged;
+  options.afterPass = [&](const OBlockPolishReport& r) { logged.push_back(r.passLog.size()); };
+  const OBlockPolishReport all = polishOBlock(full.mesh, options);
+  ASSERT_GE(all.passes, 2);
+  EXPECT_FALSE(all.interrupted);
+  ASSERT_EQ(all.passLog.size(), static_cast<std::size_t>(all.passes));
+  ASSERT_EQ(logged.size(), all.passLog.size());
+  for (std::size_t k = 0; k < logged.size(); ++k) EXPECT_EQ(logged[k], k + 1);
+  EXPECT_EQ(all.passLog[0].halfWidth, 0);
+  EXPECT_EQ(all.passLog[0].i, -1);
+  EXPECT_TRUE(all.passLog[0].raised);
+  EXPECT_EQ(all.passLog[1].halfWidth, 5);
+  EXPECT_GE(all.passLog[1].i, 0);
+  for (std::size_t k = 1; k < all.passLog.size(); ++k) {
+    EXPECT_GE(all.passLog[k].qualityAfter, all.passLog[k - 1].qualityAfter);
+    EXPECT_GE(all.passLog[k].seconds, all.passLog[k - 1].seconds);
+  }
+  EXPECT_EQ(all.passLog.back().qualityAfter, all.qualityAfter);
+
+  std::atomic<bool> stop{false};
+  options.stop = &stop;
+  options.afterPass = [&](const OBlockPolishReport&) { stop = true; };
+  const OBlockPolishReport first = polishOBlock(stopped.mesh, options);
+  EXPECT_TRUE(first.interrupted);
+  EXPECT_EQ(first.passes, 1);
+  EXPECT_TRUE(first.kept);
+  EXPECT_EQ(first.qualityAfter, all.passLog[0].qualityAfter);
+  EXPECT_EQ(computeMeshQuality(stopped.mesh).Q, first.qualityAfter);
+
+  const OBlockPolishReport none = polishOBlock(never.mesh, options);  // stop is already true
+  EXPECT_TRUE(none.interrupted);
+  EXPECT_EQ(none.passes, 0);
+  EXPECT_FALSE(none.kept);
+  EXPECT_EQ(oBlock(never.mesh).x, oBlock(unpolished).x);
+  EXPECT_EQ(oBlock(never.mesh).y, oBlock(unpolished).y);
 }
 
 TEST(OBlockPolish, RefusesAMeshWithNothingToPolish) {

@@ -151,4 +151,32 @@ TEST(EllipticMeshCommand, PolishWritesThePolishedMeshWithTheQualityItPrints) {
   EXPECT_NEAR(qPlain, before, 1e-6);
   EXPECT_NEAR(qPolished, after, 1e-6);
   EXPECT_GT(qPolished, qPlain);
+  // A line for each pass that raised Q, the whole O-block's first.
+  EXPECT_NE(polished.out.find("polish pass 1, the whole O-block: Q "), std::string::npos) << polished.out;
+}
+
+// Ctrl-C during the polish ends it early: the mesh is written with the best nodes so far
+// (the Q printed), and the exit code is 130.
+TEST(EllipticMeshCommand, CtrlCDuringThePolishWritesTheMeshSoFarAndExits130) {
+  const auto dir = caseWith("polishInterrupted", passageDict("0.85c", "4000"), "<meshDict><nT>100</nT></meshDict>");
+  const pid_t pid = startInBackground(ellipticMesh, dir, {"-polish"});
+  ASSERT_GT(pid, 0);
+  // Printed just before the polish starts (its first pass takes seconds here).
+  const bool started = waitForText(dir / "stdout.txt", "H-block cell non-uniformity", std::chrono::seconds(60));
+  kill(pid, SIGINT);
+  const int status = waitForExit(pid, std::chrono::seconds(60));
+  ASSERT_TRUE(started) << readText(dir / "stderr.txt");
+  ASSERT_NE(status, -1) << "no exit within 60 s of SIGINT";
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const std::string out = readText(dir / "stdout.txt");
+  EXPECT_NE(out.find("interrupted (Ctrl-C)"), std::string::npos) << out;
+  double before = 0, after = 0;
+  const auto line = out.find("polish: Q ");
+  ASSERT_NE(line, std::string::npos) << out;
+  ASSERT_EQ(std::sscanf(out.c_str() + line, "polish: Q %lf -> %lf", &before, &after), 2) << out;
+  const MeshQuality q = computeMeshQuality(readCgns(dir / "mesh" / "passage.cgns"));
+  EXPECT_TRUE(q.valid);
+  EXPECT_NEAR(q.Q, after, 1e-6);
+  EXPECT_GE(after, before);
 }

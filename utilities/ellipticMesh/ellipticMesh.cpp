@@ -3,8 +3,10 @@
 //          system/meshDict.xml (optional: missing keys take etc/meshDictDefaults.xml)
 //   writes mesh/passage.cgns, mesh/passage.vtm + mesh/passage/<block>.vts
 // An invalid (folded) mesh is an error: nothing is written. -polish: the O-block's final
-// polish by optimisation (OBlockPolish.hpp; one to two minutes at nO = 30000).
+// polish by optimisation (OBlockPolish.hpp; one to two minutes at nO = 30000); Ctrl-C ends
+// it early, the mesh is written with the polish so far and the exit code is 130.
 #include "passageMesh/core/CommandLine.hpp"
+#include "passageMesh/core/InterruptFlag.hpp"
 #include "passageMesh/passage/PassageCase.hpp"
 #include "passageMesh/workflow/PassageMeshFiles.hpp"
 
@@ -17,8 +19,9 @@ int main(int argc, char* argv[]) {
                     "O-block, H-block outlet) and writes mesh/passage.cgns and mesh/passage.vtm.");
     cli.addOptions()("polish", polishOptionHelp);
     if (!cli.parse(argc, argv)) return 0;
-    meshCaseAndWrite(readPassageCase(cli.caseDir(), "ellipticMesh"), cli.caseDir(), "ellipticMesh",
-                     cli.values().count("polish") > 0);
-    return 0;
+    const bool polish = cli.values().count("polish") > 0;
+    const std::atomic<bool>* stop = polish ? &installInterruptFlag() : nullptr;
+    meshCaseAndWrite(readPassageCase(cli.caseDir(), "ellipticMesh"), cli.caseDir(), "ellipticMesh", polish, stop);
+    return stop && stop->load() ? interruptedExitCode : 0;
   });
 }

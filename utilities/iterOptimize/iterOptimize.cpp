@@ -28,8 +28,6 @@ namespace po = boost::program_options;
 
 namespace {
 
-constexpr int interruptedExitCode = 130;  // 128 + SIGINT, as a shell reports Ctrl-C
-
 std::string methodList() {
   std::string list;
   for (const auto& m : optimizerMethods()) list += (list.empty() ? "" : ", ") + m;

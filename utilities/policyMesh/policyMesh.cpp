@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "passageMesh/core/CommandLine.hpp"
+#include "passageMesh/core/InterruptFlag.hpp"
 #include "passageMesh/passage/PassageCase.hpp"
 #include "passageMesh/policy/Policy.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
@@ -51,10 +52,12 @@ int main(int argc, char* argv[]) {
     for (int k = 0; k < MeshingParameters::size; ++k)
       std::printf("    %-12s %.17g\n", MeshingParameters::names()[k].c_str(), values[k]);
 
-    const HohMesh hoh = meshCaseAndWrite(input, cli.caseDir(), "policyMesh", cli.values().count("polish") > 0);
+    const bool polish = cli.values().count("polish") > 0;
+    const std::atomic<bool>* stop = polish ? &installInterruptFlag() : nullptr;
+    const HohMesh hoh = meshCaseAndWrite(input, cli.caseDir(), "policyMesh", polish, stop);
     const MeshQuality q = computeMeshQuality(hoh.mesh);
     std::printf("policyMesh: Q = %.17g (min Q_J %.6f, mean Q_J %.6f, min Q_S %.6f, mean Q_S %.6f)\n", q.Q,
                 q.QJmin, q.QJavg, q.QSmin, q.QSavg);
-    return 0;
+    return stop && stop->load() ? interruptedExitCode : 0;
   });
 }

@@ -33,8 +33,6 @@ namespace po = boost::program_options;
 
 namespace {
 
-constexpr int interruptedExitCode = 130;
-
 std::string commandText(int argc, char* argv[]) {
   std::string text = "policyTrain";
   for (int i = 1; i < argc; ++i) text += std::string(" ") + argv[i];

@@ -362,7 +362,8 @@ class PolishProblem {
 // steps' nodes, the ones with the highest Q are kept (the last step's are not always the
 // best), and none unless Q rises above report.qualityAfter; returns whether it rose.
 bool polishPass(StructuredMesh& mesh, const OBlockNeighbours& neighbours, const OBlockPolishOptions& options,
-                const PolishWindow& window, OBlockPolishReport& report) {
+                const PolishWindow& window, std::chrono::steady_clock::time_point began,
+                OBlockPolishReport& report) {
   StructuredBlock& o = mesh.blocks[static_cast<std::size_t>(neighbours.oBlock)];
   const double start = report.qualityAfter;
   StructuredBlock best;  // the O-block is only written once the best step is known
@@ -372,8 +373,9 @@ bool polishPass(StructuredMesh& mesh, const OBlockNeighbours& neighbours, const 
   PolishProblem problem(mesh, neighbours, options, window);
   // Ceres calls back once before the first step (the nodes as given: Q known) and after each.
   int step = -1, bestStep = 0;
+  const auto stopRequested = [&] { return options.stop && options.stop->load() && (report.interrupted = true); };
   report.iterations += problem.solve([&] {
-    if (++step == 0) return true;
+    if (++step == 0) return !stopRequested();
     problem.copyInto(trialO);
     const double q = computeMeshQuality(trial, workspace).Q;
     report.stepQuality.push_back(q);
@@ -383,12 +385,19 @@ bool polishPass(StructuredMesh& mesh, const OBlockNeighbours& neighbours, const 
       bestStep = step;
       best = trialO;
     }
+    if (stopRequested()) return false;
     // Q often falls for a few steps before it rises above the start: patience counts only
     // once it has (docs/elliptic-smoothing.md "Polish").
     return options.patience <= 0 || bestStep == 0 || step - bestStep < options.patience;
   });
-  if (report.qualityAfter > start) o = best;
-  return report.qualityAfter > start;
+  const bool raised = report.qualityAfter > start;
+  if (raised) o = best;
+  ++report.passes;
+  const bool whole = window.halfWidth <= 0;
+  report.passLog.push_back({window.halfWidth, whole ? -1 : window.i, whole ? -1 : window.j, raised, report.qualityAfter,
+                            std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count()});
+  if (options.afterPass) options.afterPass(report);
+  return raised;
 }
 
 }  // namespace
@@ -404,11 +413,12 @@ OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions&
 
   OBlockPolishReport report;
   report.qualityBefore = report.qualityAfter = computeMeshQuality(mesh).Q;
-  polishPass(mesh, neighbours, options, {}, report);
-  ++report.passes;
+  // A stop asked for between passes starts none.
+  const auto stopRequested = [&] { return options.stop && options.stop->load() && (report.interrupted = true); };
+  if (!stopRequested()) polishPass(mesh, neighbours, options, {}, start, report);
   // Then windows round the worst cell: Q is made of minima, and a window's few thousand
   // nodes factorise in milliseconds where the whole block takes seconds a step.
-  for (int round = 0; round < options.windowRounds; ++round) {
+  for (int round = 0; round < options.windowRounds && !report.interrupted && !stopRequested(); ++round) {
     const MeshQuality q = computeMeshQuality(mesh);
     // The worst Q_S cell's window, then where that raises no step's Q the worst Q_J cell's
     // (unless it is the same cell); each width in turn, widest first.
@@ -418,10 +428,8 @@ OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions&
     for (std::size_t w = 0; w < options.windowHalfWidths.size() && !raised; ++w) {
       const int halfWidth = options.windowHalfWidths[w];
       if (halfWidth <= 0) continue;  // 0 would be the whole block again
-      for (int k = 0; k < cells && !raised; ++k) {
-        ++report.passes;
-        raised = polishPass(mesh, neighbours, options, {worst[k].i, worst[k].j, halfWidth}, report);
-      }
+      for (int k = 0; k < cells && !raised && !report.interrupted && !stopRequested(); ++k)
+        raised = polishPass(mesh, neighbours, options, {worst[k].i, worst[k].j, halfWidth}, start, report);
     }
     if (!raised) break;
   }

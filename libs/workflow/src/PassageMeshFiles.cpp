@@ -13,7 +13,7 @@
 namespace passageMesh {
 
 HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& dir,
-                         const std::string& tool, bool polish) {
+                         const std::string& tool, bool polish, const std::atomic<bool>* stopPolish) {
   const PassageCondition& condition = input.condition;
   const MeshingParameters& parameters = input.parameters;
   HohMesh hoh = buildHohMesh(input.blade, condition, parameters);
@@ -49,10 +49,26 @@ HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& 
               blockNonUniformity(hoh.mesh.blocks[0]), blockNonUniformity(hoh.mesh.blocks[2]));
 
   if (polish) {
-    const OBlockPolishReport p = polishOBlock(hoh.mesh);
-    std::printf("  polish: Q %.6f -> %.6f (step %d of %d in %d passes), %.1f s: %s\n", p.qualityBefore,
+    std::fflush(stdout);  // the mesh's figures before the long polish
+    OBlockPolishOptions options;
+    options.stop = stopPolish;
+    // A line for each pass that raises Q: the whole O-block's takes up to a minute.
+    options.afterPass = [](const OBlockPolishReport& r) {
+      const PolishPass& last = r.passLog.back();
+      if (!last.raised) return;
+      if (last.halfWidth <= 0)
+        std::printf("  polish pass %d, the whole O-block: Q %.6f -> %.6f, %.1f s\n", r.passes, r.qualityBefore,
+                    last.qualityAfter, last.seconds);
+      else
+        std::printf("  polish pass %d, nodes within %d of cell (%d, %d): Q -> %.6f, %.1f s\n", r.passes,
+                    last.halfWidth, last.i, last.j, last.qualityAfter, last.seconds);
+      std::fflush(stdout);
+    };
+    const OBlockPolishReport p = polishOBlock(hoh.mesh, options);
+    std::printf("  polish: Q %.6f -> %.6f (step %d of %d in %d passes), %.1f s: %s%s\n", p.qualityBefore,
                 p.qualityAfter, p.bestStep, p.iterations, p.passes, p.seconds,
-                p.kept ? "kept" : "not kept (no step raised Q)");
+                p.kept ? "kept" : "not kept (no step raised Q)",
+                p.interrupted ? "; interrupted (Ctrl-C): the rest of the polish not done" : "");
   }
   validateStructuredMesh(hoh.mesh);
   std::filesystem::create_directories(dir / "mesh");

@@ -11,4 +11,8 @@ namespace passageMesh {
 // flag it sets. Setting a lock-free std::atomic<bool> is safe in a signal handler.
 const std::atomic<bool>& installInterruptFlag();
 
+// The exit code of a tool that stopped early on Ctrl-C after writing what it had: 128 +
+// SIGINT, as a shell reports it.
+inline constexpr int interruptedExitCode = 130;
+
 }  // namespace passageMesh

@@ -29,11 +29,15 @@
 // mesh untouched. The first pass moves the whole block; the
 // next ones (OBlockPolishOptions::windowRounds) only a window round the worst cell, where Q's
 // minima are, at a small fraction of the cost.
+#include <atomic>
+#include <functional>
 #include <vector>
 
 #include "passageMesh/structured/StructuredMesh.hpp"
 
 namespace passageMesh {
+
+struct OBlockPolishReport;
 
 struct OBlockPolishOptions {
   int iterations = 25;       // Levenberg-Marquardt steps a pass (docs/elliptic-smoothing.md: 25 vs 60)
@@ -56,6 +60,21 @@ struct OBlockPolishOptions {
   // cell the wide one trades away); they stop at the first round that raises none.
   int windowRounds = 20;
   std::vector<int> windowHalfWidths{30, 5};
+  // Progress and interruption (ellipticMesh and policyMesh print a line for each pass that
+  // raises Q and stop on Ctrl-C): called after every pass with the report so far; a
+  // non-null `stop` that turns true ends the polish after the step under way, with the
+  // best nodes so far kept as usual.
+  std::function<void(const OBlockPolishReport&)> afterPass;
+  const std::atomic<bool>* stop = nullptr;
+};
+
+// One Levenberg-Marquardt run of the polish.
+struct PolishPass {
+  int halfWidth = 0;          // 0: the whole O-block; else a window of this half width
+  int i = -1, j = -1;         // the window's centre: the first node of the cell it is round
+  bool raised = false;        // some step's Q beat the best before the pass (its nodes kept)
+  double qualityAfter = -1;   // the highest Q after the pass
+  double seconds = 0;         // since the polish began
 };
 
 struct OBlockPolishReport {
@@ -69,6 +88,8 @@ struct OBlockPolishReport {
   double qualityAfter = -1;   // the highest Q of the steps' nodes (kept), or qualityBefore
   double seconds = 0;         // wall time of the polish
   std::vector<double> stepQuality;  // Q of each step's nodes, in order, over all passes (-1: invalid)
+  std::vector<PolishPass> passLog;  // every pass in order (passes of them)
+  bool interrupted = false;   // options.stop ended the polish early
 };
 
 // Polishes the O-block ("OBlock") of `mesh` in place. Throws std::invalid_argument when the
