@@ -130,6 +130,16 @@ TEST(PolicyMeshCommand, MeshesWithATrainedPolicyAndRefusesBadPolicyFiles) {
     EXPECT_FALSE(fs::exists(dir / "mesh" / "passage.cgns"));
   }
 
+  // An ensemble of the policy with itself acts as the policy: the same meshing parameters.
+  const fs::path ensembleXml = trained / "policy" / "twice.xml";
+  writeText(ensembleXml, "<policy><format>passageMesh policy ensemble 1</format>"
+                         "<members>final.xml final.xml</members></policy>\n");
+  const fs::path twice = meshCase("policyMeshEnsemble");
+  const RunResult e = runTool(policyMesh, twice, "-policy '" + ensembleXml.string() + "'");
+  EXPECT_EQ(e.exitCode, r.exitCode) << e.err;
+  EXPECT_NE(e.out.find("an ensemble of 2 trained in 64 episodes"), std::string::npos) << e.out;
+  EXPECT_EQ(readText(twice / "system" / "meshDict.xml"), readText(dir / "system" / "meshDict.xml"));
+
   const auto refused = [&](const std::string& name, const std::string& policyArgument,
                            const std::string& expected) {
     const fs::path c = meshCase(name);

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 #include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/core/InterruptFlag.hpp"
@@ -45,9 +46,11 @@ int main(int argc, char* argv[]) {
     const double forwardSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     writeMeshDict(cli.caseDir() / "system" / "meshDict.xml", input.parameters);
-    std::printf("policyMesh: policy %s (%ld episodes), forward pass %.3f ms; meshing parameters "
+    const std::string members =
+        policy.members() > 1 ? "an ensemble of " + std::to_string(policy.members()) + " trained in " : "";
+    std::printf("policyMesh: policy %s (%s%ld episodes), forward pass %.3f ms; meshing parameters "
                 "(yIn, yOut in metres) written to system/meshDict.xml:\n",
-                policyFile.c_str(), policy.provenance().episodes, 1e3 * forwardSeconds);
+                policyFile.c_str(), members.c_str(), policy.provenance().episodes, 1e3 * forwardSeconds);
     const auto values = input.parameters.toArray();
     for (int k = 0; k < MeshingParameters::size; ++k)
       std::printf("    %-12s %.17g\n", MeshingParameters::names()[k].c_str(), values[k]);

@@ -18,6 +18,8 @@ namespace {
 // state value linearly and are still read.
 constexpr const char* policyFormat = "passageMesh policy 2";
 constexpr const char* policyFormat1 = "passageMesh policy 1";
+// An ensemble: the mean action of member policies (twenty-third session, docs/policy.md).
+constexpr const char* ensembleFormat = "passageMesh policy ensemble 1";
 
 const std::vector<std::string>& policyKeys() {
   static const std::vector<std::string> keys{
@@ -30,6 +32,14 @@ const std::vector<std::string>& policyKeys() {
 std::vector<std::string> policyKeysOfFormat2() {
   std::vector<std::string> keys = policyKeys();
   keys.push_back("stateScale");
+  return keys;
+}
+
+// Either kind of file: an ensemble has format, members and optionally
+// validationMeanReward and command.
+std::vector<std::string> policyOrEnsembleKeys() {
+  std::vector<std::string> keys = policyKeysOfFormat2();
+  keys.push_back("members");
   return keys;
 }
 
@@ -121,23 +131,69 @@ struct Policy::Actor {
   PolicyStateScaling scaling;
   FullyConnected network{nullptr};
   PolicyProvenance provenance;
+
+  static Actor load(const Dictionary& d, const std::filesystem::path& xmlFile);
 };
 
-Policy::Policy() : actor_(std::make_unique<Actor>()) {}
+struct Policy::Members {
+  std::vector<Actor> actors;
+  PolicyProvenance provenance;  // the single actor's, or the ensemble's
+};
+
+Policy::Policy() : members_(std::make_unique<Members>()) {}
 Policy::~Policy() = default;
 Policy::Policy(Policy&&) noexcept = default;
 Policy& Policy::operator=(Policy&&) noexcept = default;
 
 Policy Policy::load(const std::filesystem::path& xmlFile) {
   if (!std::filesystem::exists(xmlFile)) throw InputError(xmlFile.string(), 0, "no such policy file");
-  const Dictionary d = Dictionary::read(xmlFile, "policy", policyKeysOfFormat2());
+  const Dictionary d = Dictionary::read(xmlFile, "policy", policyOrEnsembleKeys());
+  d.require({"format"});
+  Policy policy;
+  Members& m = *policy.members_;
+  if (d.text("format") != ensembleFormat) {
+    m.actors.push_back(Actor::load(d, xmlFile));
+    m.provenance = m.actors.front().provenance;
+    return policy;
+  }
+  for (const std::string& key : policyKeysOfFormat2())
+    if (d.has(key) && key != "format" && key != "validationMeanReward" && key != "command")
+      throw InputError(d.source(), d.line(key), "<" + key + "> belongs to a member's file, not to an ensemble's");
+  d.require({"members"});
+  std::istringstream names(d.text("members"));
+  for (std::string name; names >> name;) {
+    const std::filesystem::path memberFile = xmlFile.parent_path() / name;
+    if (!std::filesystem::exists(memberFile))
+      throw InputError(d.source(), d.line("members"), "the member " + memberFile.string() + " does not exist");
+    const Dictionary member = Dictionary::read(memberFile, "policy", policyOrEnsembleKeys());
+    member.require({"format"});
+    if (member.text("format") == ensembleFormat)
+      throw InputError(member.source(), member.line("format"), "a member must be a single policy, not an ensemble");
+    m.actors.push_back(Actor::load(member, memberFile));
+    const Actor& first = m.actors.front();
+    const Actor& added = m.actors.back();
+    if (added.scaling.logarithmic != first.scaling.logarithmic)
+      throw InputError(member.source(), member.line("format"),
+                       "scales the state otherwise (<stateScale>) than the first member");
+    m.provenance.episodes += added.provenance.episodes;
+  }
+  if (m.actors.empty())
+    throw InputError(d.source(), d.line("members"), "<members> expects one or more member policy files");
+  if (d.has("validationMeanReward")) m.provenance.validationMeanReward = d.scalar("validationMeanReward");
+  if (d.has("command")) m.provenance.command = d.text("command");
+  return policy;
+}
+
+Policy::Actor Policy::Actor::load(const Dictionary& d, const std::filesystem::path& xmlFile) {
+  if (d.has("members"))
+    throw InputError(d.source(), d.line("members"), "<members> belongs to an ensemble's file (format '" +
+                                                        std::string(ensembleFormat) + "')");
   d.require(policyKeys());
   const bool format1 = d.text("format") == policyFormat1;
   if (!format1) expectText(d, "format", policyFormat);
   const PolicyDescription description;
   expectText(d, "stateNames", joined(policyStateNames()));
-  Policy policy;
-  Actor& a = *policy.actor_;
+  Actor a;
   // This build's ranges; every value linear (format 1) until <stateScale> says otherwise.
   a.scaling = policyStateScaling(BladeParameterRange::readDefault(), EdgeRadiusScale::linear);
   if (!format1) {
@@ -203,21 +259,27 @@ Policy Policy::load(const std::filesystem::path& xmlFile) {
                                                 " describes (" + what + ")");
   }
   a.network->eval();
-  return policy;
+  return a;
 }
 
 PolicyAction Policy::act(const PolicyState& state) const {
   torch::NoGradGuard noGrad;
   PolicyBatch s(1, policyStateSize);
   for (int k = 0; k < policyStateSize; ++k) s(0, k) = state[k];
-  const PolicyBatch a = batchOf(actor_->network->forward(tensorOf(s)));
-  PolicyAction action;
-  for (int k = 0; k < policyActionSize; ++k) action[k] = a(0, k);
+  const torch::Tensor input = tensorOf(s);
+  PolicyAction action{};
+  std::vector<Actor>& actors = members_->actors;  // forward() is not const in LibTorch
+  for (Actor& actor : actors) {
+    const PolicyBatch a = batchOf(actor.network->forward(input));
+    for (int k = 0; k < policyActionSize; ++k) action[k] += a(0, k);
+  }
+  // A single actor's action exactly as its network gives it (x / 1 == x).
+  for (double& a : action) a /= static_cast<double>(actors.size());
   return action;
 }
 
 PolicyState Policy::state(const BladeParameters& blade, const PassageCondition& condition) const {
-  return policyState(blade, condition, actor_->scaling);
+  return policyState(blade, condition, members_->actors.front().scaling);
 }
 
 MeshingParameters Policy::meshingParameters(const BladeParameters& blade,
@@ -225,10 +287,11 @@ MeshingParameters Policy::meshingParameters(const BladeParameters& blade,
   return meshingParametersOf(act(state(blade, condition)), blade.chord);
 }
 
-const PolicyStateScaling& Policy::stateScaling() const { return actor_->scaling; }
+const PolicyStateScaling& Policy::stateScaling() const { return members_->actors.front().scaling; }
 
-const NetworkLayout& Policy::layout() const { return actor_->layout; }
-const PolicyProvenance& Policy::provenance() const { return actor_->provenance; }
+const NetworkLayout& Policy::layout() const { return members_->actors.front().layout; }
+const PolicyProvenance& Policy::provenance() const { return members_->provenance; }
+int Policy::members() const { return static_cast<int>(members_->actors.size()); }
 
 std::filesystem::path defaultPolicyFile() { return findEtcFile("policy/policy.xml"); }
 

@@ -5,7 +5,12 @@
 //             linear or logarithmic scale) that map them to [-1, 1]
 //   NAME.pt   the actor's weights, LibTorch's own serialisation; Python reads them by name
 //             with torch.jit.load("NAME.pt").state_dict() (layers.0.weight, ...)
-// policyMesh loads it and maps a passage to its meshing parameters in one forward pass.
+// or an ensemble of such policies:
+//   NAME.xml  format "passageMesh policy ensemble 1" and <members>, the member policies'
+//             .xml files (relative to it); the ensemble's action is the mean of the
+//             members' actions (scaled units), each member one forward pass
+// policyMesh loads it and maps a passage to its meshing parameters in one forward pass
+// (one per member).
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -33,26 +38,31 @@ void writePolicyFiles(const std::filesystem::path& xmlFile, const ActorCritic& l
 
 class Policy {
  public:
-  // Reads NAME.xml and the actor file it names. A missing or corrupt file, or a layout or
-  // scaling that is not this build's, is an InputError naming the file.
+  // Reads NAME.xml and the actor file it names, or an ensemble's member files. A missing or
+  // corrupt file, a layout or scaling that is not this build's, or members that scale the
+  // state differently, is an InputError naming the file.
   static Policy load(const std::filesystem::path& xmlFile);
   ~Policy();
   Policy(Policy&&) noexcept;
   Policy& operator=(Policy&&) noexcept;
 
-  PolicyAction act(const PolicyState& state) const;  // one forward pass, no noise
+  PolicyAction act(const PolicyState& state) const;  // one forward pass a member, no noise
   // The passage's state under this policy's own scaling (its file's <stateScale>).
   PolicyState state(const BladeParameters& blade, const PassageCondition& condition) const;
   const PolicyStateScaling& stateScaling() const;
   MeshingParameters meshingParameters(const BladeParameters& blade,
                                       const PassageCondition& condition) const;
-  const NetworkLayout& layout() const;
+  const NetworkLayout& layout() const;  // the first member's
+  // An ensemble's: the members' episodes summed, its file's <validationMeanReward> and
+  // <command> (0 and empty where it has none).
   const PolicyProvenance& provenance() const;
+  int members() const;  // 1 for a single actor
 
  private:
   Policy();
   struct Actor;
-  std::unique_ptr<Actor> actor_;
+  struct Members;
+  std::unique_ptr<Members> members_;
 };
 
 // etc/policy/policy.xml (the shipped policy).
