@@ -162,13 +162,8 @@ TEST(EllipticMeshCommand, CtrlCDuringThePolishWritesTheMeshSoFarAndExits130) {
   const pid_t pid = startInBackground(ellipticMesh, dir, {"-polish"});
   ASSERT_GT(pid, 0);
   // Printed just before the polish starts (its first pass takes seconds here).
-  const bool started = waitForText(dir / "stdout.txt", "H-block cell non-uniformity", std::chrono::seconds(60));
-  kill(pid, SIGINT);
-  const int status = waitForExit(pid, std::chrono::seconds(60));
-  ASSERT_TRUE(started) << readText(dir / "stderr.txt");
-  ASSERT_NE(status, -1) << "no exit within 60 s of SIGINT";
-  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status);
-  EXPECT_EQ(WEXITSTATUS(status), 130);
+  expectInterruptedWith130(pid, dir / "stdout.txt", "H-block cell non-uniformity");
+  if (HasFatalFailure()) return;
   const std::string out = readText(dir / "stdout.txt");
   EXPECT_NE(out.find("interrupted (Ctrl-C)"), std::string::npos) << out;
   double before = 0, after = 0;

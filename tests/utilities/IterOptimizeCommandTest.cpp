@@ -235,13 +235,8 @@ TEST(IterOptimizeCommand, CtrlCWritesTheBestSoFarAndExits130) {
   const pid_t pid = startTool(dir, {"-budget", std::to_string(budget), "-threads", "2"});
   ASSERT_GT(pid, 0);
   // The first progress line comes after the first batch: the run is under way.
-  const bool started = waitForText(dir / "stderr.txt", "evaluations, best Q", std::chrono::seconds(60));
-  kill(pid, SIGINT);
-  const int status = waitForExit(pid, std::chrono::seconds(60));
-  ASSERT_TRUE(started) << readText(dir / "stderr.txt");
-  ASSERT_NE(status, -1) << "no exit within 60 s of SIGINT";
-  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status);
-  EXPECT_EQ(WEXITSTATUS(status), 130);
+  expectInterruptedWith130(pid, dir / "stderr.txt", "evaluations, best Q");
+  if (HasFatalFailure()) return;
   const std::string err = readText(dir / "stderr.txt");
   EXPECT_NE(err.find("iterOptimize: interrupted after"), std::string::npos) << err;
 

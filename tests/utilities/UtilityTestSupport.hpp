@@ -105,4 +105,17 @@ inline int waitForExit(pid_t pid, std::chrono::seconds limit) {
   return -1;
 }
 
+// Ctrl-C once a run is under way: waits (up to 60 s) for `text` in `file` (its stdout.txt
+// or stderr.txt), sends SIGINT and expects the process to exit by itself within 60 s with
+// exit code 130, the suite's code for a run stopped early that wrote what it had.
+inline void expectInterruptedWith130(pid_t pid, const std::filesystem::path& file, const std::string& text) {
+  const bool started = waitForText(file, text, std::chrono::seconds(60));
+  kill(pid, SIGINT);
+  const int status = waitForExit(pid, std::chrono::seconds(60));
+  ASSERT_TRUE(started) << readText(file);
+  ASSERT_NE(status, -1) << "no exit within 60 s of SIGINT";
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+}
+
 }  // namespace passageMesh::testData
