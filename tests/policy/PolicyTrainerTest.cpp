@@ -338,6 +338,14 @@ TEST(PolicyTrainer, StartingFromAnotherRunMaySwitchTheQualityNetworkToBounded) {
   EXPECT_TRUE(q.allFinite());
   ASSERT_TRUE(continued.run(nullptr, {}));
   EXPECT_EQ(continued.episode(), 128);
+  // And back: a bounded run's checkpoint continues under the unbounded critic.
+  continued.saveCheckpoint(dir / "bounded.pt");
+  PolicyTrainOptions back = smallRun(160);
+  back.criticModel = CriticModel::validityAndQuality;
+  PolicyTrainer unboundedAgain(back, toy, rollouts);
+  unboundedAgain.resume(dir / "bounded.pt", false);
+  EXPECT_EQ(unboundedAgain.episode(), 128);
+  EXPECT_EQ(fingerprint(unboundedAgain.learner(), 24, 8).first, fingerprint(continued.learner(), 24, 8).first);
 
   PolicyTrainer fromReward(bounded, toy, rollouts);
   try {

@@ -220,8 +220,8 @@ TEST(OBlockPolish, LeavesTheMeshUntouchedWhereQDoesNotRise) {
 
 // ellipticMesh prints a line a pass and stops on Ctrl-C: every pass is logged and reported
 // as it ends; a stop asked for after the first pass leaves that pass's nodes, the same as
-// an uninterrupted run's after its first pass; a stop asked for before leaves the mesh as
-// it was.
+// an uninterrupted run's after its first pass; one asked for within a pass ends it after
+// the step under way; one asked for before leaves the mesh as it was.
 TEST(OBlockPolish, LogsEveryPassAndStopsWhenAskedWithTheBestNodesSoFar) {
   HohMesh full = validHohMesh(), stopped = validHohMesh(), never = validHohMesh();
   const StructuredMesh unpolished = never.mesh;
@@ -256,6 +256,27 @@ TEST(OBlockPolish, LogsEveryPassAndStopsWhenAskedWithTheBestNodesSoFar) {
   EXPECT_TRUE(first.kept);
   EXPECT_EQ(first.qualityAfter, all.passLog[0].qualityAfter);
   EXPECT_EQ(computeMeshQuality(stopped.mesh).Q, first.qualityAfter);
+
+  // A stop asked for in the middle of the whole-block pass, after its third step, ends it
+  // there: one pass of three steps (the uninterrupted run's first three), the best kept.
+  HohMesh midway = validHohMesh();
+  std::atomic<bool> stopMidway{false};
+  OBlockPolishOptions third;
+  third.stop = &stopMidway;
+  third.afterStep = [&](const OBlockPolishReport& r) { stopMidway = r.stepQuality.size() >= 3; };
+  const OBlockPolishReport mid = polishOBlock(midway.mesh, third);
+  EXPECT_TRUE(mid.interrupted);
+  EXPECT_EQ(mid.passes, 1);
+  EXPECT_EQ(mid.iterations, 3);
+  ASSERT_EQ(mid.stepQuality.size(), 3u);
+  ASSERT_GE(all.stepQuality.size(), 3u);
+  double bestOfThree = mid.qualityBefore;
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(mid.stepQuality[static_cast<std::size_t>(k)], all.stepQuality[static_cast<std::size_t>(k)]) << k;
+    bestOfThree = std::max(bestOfThree, mid.stepQuality[static_cast<std::size_t>(k)]);
+  }
+  EXPECT_EQ(mid.qualityAfter, bestOfThree);
+  EXPECT_EQ(computeMeshQuality(midway.mesh).Q, mid.qualityAfter);
 
   const OBlockPolishReport none = polishOBlock(never.mesh, options);  // stop is already true
   EXPECT_TRUE(none.interrupted);

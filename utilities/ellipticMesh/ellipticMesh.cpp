@@ -3,7 +3,8 @@
 //          system/meshDict.xml (optional: missing keys take etc/meshDictDefaults.xml)
 //   writes mesh/passage.cgns, mesh/passage.vtm + mesh/passage/<block>.vts
 // An invalid (folded) mesh is an error: nothing is written. -polish: the O-block's final
-// polish by optimisation (OBlockPolish.hpp; one to two minutes at nO = 30000); Ctrl-C ends
+// polish by optimisation (OBlockPolish.hpp; half a minute to a minute and a half at nO =
+// 30000); Ctrl-C ends
 // it early, the mesh is written with the polish so far and the exit code is 130.
 #include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/core/InterruptFlag.hpp"
@@ -21,7 +22,8 @@ int main(int argc, char* argv[]) {
     if (!cli.parse(argc, argv)) return 0;
     const bool polish = cli.values().count("polish") > 0;
     const std::atomic<bool>* stop = polish ? &installInterruptFlag() : nullptr;
-    meshCaseAndWrite(readPassageCase(cli.caseDir(), "ellipticMesh"), cli.caseDir(), "ellipticMesh", polish, stop);
-    return stop && stop->load() ? interruptedExitCode : 0;
+    const MeshedCase meshed =
+        meshCaseAndWrite(readPassageCase(cli.caseDir(), "ellipticMesh"), cli.caseDir(), "ellipticMesh", polish, stop);
+    return meshed.polishInterrupted ? interruptedExitCode : 0;
   });
 }

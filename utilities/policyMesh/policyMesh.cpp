@@ -1,6 +1,9 @@
 // policyMesh: meshes a blade passage in one shot with a trained policy (issue 12,
-// docs/policy.md): one forward pass of the actor maps the blade and the condition to the
-// meshing parameters, then the HOH mesh is built, written and measured in the same run.
+// docs/policy.md): one forward pass of the actor (of each member of an ensemble, whose
+// actions are averaged) maps the blade and the condition to the meshing parameters, then
+// the HOH mesh is built, written and measured in the same run. -polish: the O-block's
+// polish as in ellipticMesh; Ctrl-C ends it early, the mesh is written with the polish so
+// far and the exit code is 130.
 //   reads  constant/bladeParameters.xml, system/passageDict.xml, the policy
 //          (-policy FILE.xml; default etc/policy/policy.xml, the shipped one)
 //   writes system/meshDict.xml (the policy's parameters), mesh/passage.cgns,
@@ -47,7 +50,7 @@ int main(int argc, char* argv[]) {
 
     writeMeshDict(cli.caseDir() / "system" / "meshDict.xml", input.parameters);
     const std::string members =
-        policy.members() > 1 ? "an ensemble of " + std::to_string(policy.members()) + " trained in " : "";
+        policy.memberCount() > 1 ? "an ensemble of " + std::to_string(policy.memberCount()) + " trained in " : "";
     std::printf("policyMesh: policy %s (%s%ld episodes), forward pass %.3f ms; meshing parameters "
                 "(yIn, yOut in metres) written to system/meshDict.xml:\n",
                 policyFile.c_str(), members.c_str(), policy.provenance().episodes, 1e3 * forwardSeconds);
@@ -57,10 +60,11 @@ int main(int argc, char* argv[]) {
 
     const bool polish = cli.values().count("polish") > 0;
     const std::atomic<bool>* stop = polish ? &installInterruptFlag() : nullptr;
-    const HohMesh hoh = meshCaseAndWrite(input, cli.caseDir(), "policyMesh", polish, stop);
+    const MeshedCase meshed = meshCaseAndWrite(input, cli.caseDir(), "policyMesh", polish, stop);
+    const HohMesh& hoh = meshed.hoh;
     const MeshQuality q = computeMeshQuality(hoh.mesh);
     std::printf("policyMesh: Q = %.17g (min Q_J %.6f, mean Q_J %.6f, min Q_S %.6f, mean Q_S %.6f)\n", q.Q,
                 q.QJmin, q.QJavg, q.QSmin, q.QSavg);
-    return stop && stop->load() ? interruptedExitCode : 0;
+    return meshed.polishInterrupted ? interruptedExitCode : 0;
   });
 }

@@ -161,6 +161,7 @@ Policy Policy::load(const std::filesystem::path& xmlFile) {
       throw InputError(d.source(), d.line(key), "<" + key + "> belongs to a member's file, not to an ensemble's");
   d.require({"members"});
   std::istringstream names(d.text("members"));
+  std::string firstMember;
   for (std::string name; names >> name;) {
     const std::filesystem::path memberFile = xmlFile.parent_path() / name;
     if (!std::filesystem::exists(memberFile))
@@ -172,9 +173,11 @@ Policy Policy::load(const std::filesystem::path& xmlFile) {
     m.actors.push_back(Actor::load(member, memberFile));
     const Actor& first = m.actors.front();
     const Actor& added = m.actors.back();
+    if (firstMember.empty()) firstMember = name;
     if (added.scaling.logarithmic != first.scaling.logarithmic)
-      throw InputError(member.source(), member.line("format"),
-                       "scales the state otherwise (<stateScale>) than the first member");
+      throw InputError(member.source(), member.line(member.has("stateScale") ? "stateScale" : "format"),
+                       "<stateScale> differs from the first member's (" + firstMember +
+                           "): the members must scale the state alike");
     m.provenance.episodes += added.provenance.episodes;
   }
   if (m.actors.empty())
@@ -291,7 +294,7 @@ const PolicyStateScaling& Policy::stateScaling() const { return members_->actors
 
 const NetworkLayout& Policy::layout() const { return members_->actors.front().layout; }
 const PolicyProvenance& Policy::provenance() const { return members_->provenance; }
-int Policy::members() const { return static_cast<int>(members_->actors.size()); }
+int Policy::memberCount() const { return static_cast<int>(members_->actors.size()); }
 
 std::filesystem::path defaultPolicyFile() { return findEtcFile("policy/policy.xml"); }
 

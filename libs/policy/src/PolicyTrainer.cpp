@@ -330,12 +330,13 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
     archive.read("layout", value);
     // A continuation (-startFrom) may switch between the two validity critics: they hold the
     // same tensors and differ only in whether the quality output is read through a sigmoid.
-    NetworkLayout other = learner_.layout();
-    if (!sameSettings && hasValidity(other.critic))
-      other.critic = other.critic == CriticModel::validityAndQuality ? CriticModel::validityAndBoundedQuality
-                                                                      : CriticModel::validityAndQuality;
-    if (value.toStringRef() != layoutText(learner_.layout()) &&
-        (sameSettings || !hasValidity(other.critic) || value.toStringRef() != layoutText(other)))
+    NetworkLayout switched = learner_.layout();
+    const bool mayBeSwitched = !sameSettings && hasValidity(switched.critic);
+    switched.critic = switched.critic == CriticModel::validityAndQuality ? CriticModel::validityAndBoundedQuality
+                                                                          : CriticModel::validityAndQuality;
+    const bool acceptable = value.toStringRef() == layoutText(learner_.layout()) ||
+                            (mayBeSwitched && value.toStringRef() == layoutText(switched));
+    if (!acceptable)
       throw InputError(name, 0, "the checkpoint's networks are " + value.toStringRef() +
                                     " (state, action, [hidden], slope[, critic model]), this run's " +
                                     layoutText(learner_.layout()));

@@ -358,6 +358,12 @@ class PolishProblem {
   ceres::Problem problem_;
 };
 
+// Whether options.stop asks the polish to end; records it in the report.
+bool stopAsked(const OBlockPolishOptions& options, OBlockPolishReport& report) {
+  if (options.stop && options.stop->load()) report.interrupted = true;
+  return report.interrupted;
+}
+
 // One Levenberg-Marquardt run over the window's nodes. The surrogate is not Q: of the
 // steps' nodes, the ones with the highest Q are kept (the last step's are not always the
 // best), and none unless Q rises above report.qualityAfter; returns whether it rose.
@@ -373,9 +379,8 @@ bool polishPass(StructuredMesh& mesh, const OBlockNeighbours& neighbours, const 
   PolishProblem problem(mesh, neighbours, options, window);
   // Ceres calls back once before the first step (the nodes as given: Q known) and after each.
   int step = -1, bestStep = 0;
-  const auto stopRequested = [&] { return options.stop && options.stop->load() && (report.interrupted = true); };
   report.iterations += problem.solve([&] {
-    if (++step == 0) return !stopRequested();
+    if (++step == 0) return !stopAsked(options, report);
     problem.copyInto(trialO);
     const double q = computeMeshQuality(trial, workspace).Q;
     report.stepQuality.push_back(q);
@@ -385,13 +390,15 @@ bool polishPass(StructuredMesh& mesh, const OBlockNeighbours& neighbours, const 
       bestStep = step;
       best = trialO;
     }
-    if (stopRequested()) return false;
+    if (options.afterStep) options.afterStep(report);
+    if (stopAsked(options, report)) return false;
     // Q often falls for a few steps before it rises above the start: patience counts only
     // once it has (docs/elliptic-smoothing.md "Polish").
     return options.patience <= 0 || bestStep == 0 || step - bestStep < options.patience;
   });
   const bool raised = report.qualityAfter > start;
   if (raised) o = best;
+  if (step <= 0 && report.interrupted) return false;  // stopped before its first step: no pass
   ++report.passes;
   const bool whole = window.halfWidth <= 0;
   report.passLog.push_back({window.halfWidth, whole ? -1 : window.i, whole ? -1 : window.j, raised, report.qualityAfter,
@@ -414,11 +421,10 @@ OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions&
   OBlockPolishReport report;
   report.qualityBefore = report.qualityAfter = computeMeshQuality(mesh).Q;
   // A stop asked for between passes starts none.
-  const auto stopRequested = [&] { return options.stop && options.stop->load() && (report.interrupted = true); };
-  if (!stopRequested()) polishPass(mesh, neighbours, options, {}, start, report);
+  if (!stopAsked(options, report)) polishPass(mesh, neighbours, options, {}, start, report);
   // Then windows round the worst cell: Q is made of minima, and a window's few thousand
   // nodes factorise in milliseconds where the whole block takes seconds a step.
-  for (int round = 0; round < options.windowRounds && !report.interrupted && !stopRequested(); ++round) {
+  for (int round = 0; round < options.windowRounds && !stopAsked(options, report); ++round) {
     const MeshQuality q = computeMeshQuality(mesh);
     // The worst Q_S cell's window, then where that raises no step's Q the worst Q_J cell's
     // (unless it is the same cell); each width in turn, widest first.
@@ -428,7 +434,7 @@ OBlockPolishReport polishOBlock(StructuredMesh& mesh, const OBlockPolishOptions&
     for (std::size_t w = 0; w < options.windowHalfWidths.size() && !raised; ++w) {
       const int halfWidth = options.windowHalfWidths[w];
       if (halfWidth <= 0) continue;  // 0 would be the whole block again
-      for (int k = 0; k < cells && !raised && !report.interrupted && !stopRequested(); ++k)
+      for (int k = 0; k < cells && !raised && !stopAsked(options, report); ++k)
         raised = polishPass(mesh, neighbours, options, {worst[k].i, worst[k].j, halfWidth}, start, report);
     }
     if (!raised) break;

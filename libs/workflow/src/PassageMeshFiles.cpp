@@ -12,11 +12,12 @@
 
 namespace passageMesh {
 
-HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& dir,
-                         const std::string& tool, bool polish, const std::atomic<bool>* stopPolish) {
+MeshedCase meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& dir,
+                            const std::string& tool, bool polish, const std::atomic<bool>* stopPolish) {
   const PassageCondition& condition = input.condition;
   const MeshingParameters& parameters = input.parameters;
-  HohMesh hoh = buildHohMesh(input.blade, condition, parameters);
+  MeshedCase meshed{buildHohMesh(input.blade, condition, parameters)};
+  HohMesh& hoh = meshed.hoh;
   const EllipticReport& s = hoh.smoothing;
   if (s.iterations > 0)
     std::printf("%s: O-block %d x %d nodes; elliptic smoothing: %d multigrid cycles, "
@@ -65,17 +66,21 @@ HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& 
       std::fflush(stdout);
     };
     const OBlockPolishReport p = polishOBlock(hoh.mesh, options);
-    std::printf("  polish: Q %.6f -> %.6f (step %d of %d in %d passes), %.1f s: %s%s\n", p.qualityBefore,
-                p.qualityAfter, p.bestStep, p.iterations, p.passes, p.seconds,
-                p.kept ? "kept" : "not kept (no step raised Q)",
-                p.interrupted ? "; interrupted (Ctrl-C): the rest of the polish not done" : "");
+    meshed.polishInterrupted = p.interrupted;
+    if (p.interrupted && p.passes == 0)
+      std::printf("  polish: interrupted (Ctrl-C) before its first step: the mesh is the elliptic one\n");
+    else
+      std::printf("  polish: Q %.6f -> %.6f (step %d of %d in %d passes), %.1f s: %s%s\n", p.qualityBefore,
+                  p.qualityAfter, p.bestStep, p.iterations, p.passes, p.seconds,
+                  p.kept ? "kept" : "not kept (no step raised Q)",
+                  p.interrupted ? "; interrupted (Ctrl-C): the rest of the polish not done" : "");
   }
   validateStructuredMesh(hoh.mesh);
   std::filesystem::create_directories(dir / "mesh");
   writeFilesAtomically(vtmFileContents(hoh.mesh, dir / "mesh" / "passage.vtm"));
   writeCgns(hoh.mesh, dir / "mesh" / "passage.cgns");
   std::printf("  wrote mesh/passage.cgns, mesh/passage.vtm\n");
-  return hoh;
+  return meshed;
 }
 
 }  // namespace passageMesh

@@ -46,7 +46,7 @@ class Policy {
   Policy(Policy&&) noexcept;
   Policy& operator=(Policy&&) noexcept;
 
-  PolicyAction act(const PolicyState& state) const;  // one forward pass a member, no noise
+  PolicyAction act(const PolicyState& state) const;  // one forward pass per member, no noise
   // The passage's state under this policy's own scaling (its file's <stateScale>).
   PolicyState state(const BladeParameters& blade, const PassageCondition& condition) const;
   const PolicyStateScaling& stateScaling() const;
@@ -56,7 +56,7 @@ class Policy {
   // An ensemble's: the members' episodes summed, its file's <validationMeanReward> and
   // <command> (0 and empty where it has none).
   const PolicyProvenance& provenance() const;
-  int members() const;  // 1 for a single actor
+  int memberCount() const;  // 1 for a single actor
 
  private:
   Policy();

@@ -61,9 +61,10 @@ struct OBlockPolishOptions {
   int windowRounds = 20;
   std::vector<int> windowHalfWidths{30, 5};
   // Progress and interruption (ellipticMesh and policyMesh print a line for each pass that
-  // raises Q and stop on Ctrl-C): called after every pass with the report so far; a
-  // non-null `stop` that turns true ends the polish after the step under way, with the
-  // best nodes so far kept as usual.
+  // raises Q and stop on Ctrl-C): afterStep is called after every step, once its Q is in
+  // the report, afterPass after every pass; a non-null `stop` that turns true ends the
+  // polish after the step under way, with the best nodes so far kept as usual.
+  std::function<void(const OBlockPolishReport&)> afterStep;
   std::function<void(const OBlockPolishReport&)> afterPass;
   const std::atomic<bool>* stop = nullptr;
 };
@@ -88,7 +89,8 @@ struct OBlockPolishReport {
   double qualityAfter = -1;   // the highest Q of the steps' nodes (kept), or qualityBefore
   double seconds = 0;         // wall time of the polish
   std::vector<double> stepQuality;  // Q of each step's nodes, in order, over all passes (-1: invalid)
-  std::vector<PolishPass> passLog;  // every pass in order (passes of them)
+  std::vector<PolishPass> passLog;  // every pass in order (passes of them; a pass stopped
+                                    // before its first step is none)
   bool interrupted = false;   // options.stop ended the polish early
 };
 

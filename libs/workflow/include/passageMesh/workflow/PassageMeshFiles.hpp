@@ -18,9 +18,13 @@ namespace passageMesh {
 // for each pass that raises Q; a non-null `stopPolish` that turns true (Ctrl-C:
 // installInterruptFlag) ends the polish early, and the mesh is written with the best
 // nodes so far.
-HohMesh meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& caseDir,
-                         const std::string& tool, bool polish = false,
-                         const std::atomic<bool>* stopPolish = nullptr);
+struct MeshedCase {
+  HohMesh hoh;                     // as written
+  bool polishInterrupted = false;  // stopPolish ended the polish before its last pass
+};
+MeshedCase meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& caseDir,
+                            const std::string& tool, bool polish = false,
+                            const std::atomic<bool>* stopPolish = nullptr);
 
 // The help of the `-polish` option of the tools that call meshCaseAndWrite.
 inline constexpr const char* polishOptionHelp =
