@@ -4,8 +4,8 @@
 //   writes mesh/passage.cgns, mesh/passage.vtm + mesh/passage/<block>.vts
 // An invalid (folded) mesh is an error: nothing is written. -polish: the O-block's final
 // polish by optimisation (OBlockPolish.hpp; half a minute to a minute and a half at nO =
-// 30000); Ctrl-C ends
-// it early, the mesh is written with the polish so far and the exit code is 130.
+// 30000); Ctrl-C ends it early, the mesh is written with the polish so far and the exit
+// code is 130.
 #include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/core/InterruptFlag.hpp"
 #include "passageMesh/passage/PassageCase.hpp"

@@ -399,7 +399,6 @@ bool polishPass(StructuredMesh& mesh, const OBlockNeighbours& neighbours, const 
   const bool raised = report.qualityAfter > start;
   if (raised) o = best;
   if (step <= 0 && report.interrupted) return false;  // stopped before its first step: no pass
-  ++report.passes;
   const bool whole = window.halfWidth <= 0;
   report.passLog.push_back({window.halfWidth, whole ? -1 : window.i, whole ? -1 : window.j, raised, report.qualityAfter,
                             std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count()});

@@ -58,20 +58,20 @@ MeshedCase meshCaseAndWrite(const PassageCase& input, const std::filesystem::pat
       const PolishPass& last = r.passLog.back();
       if (!last.raised) return;
       if (last.halfWidth <= 0)
-        std::printf("  polish pass %d, the whole O-block: Q %.6f -> %.6f, %.1f s\n", r.passes, r.qualityBefore,
+        std::printf("  polish pass %d, the whole O-block: Q %.6f -> %.6f, %.1f s\n", r.passes(), r.qualityBefore,
                     last.qualityAfter, last.seconds);
       else
-        std::printf("  polish pass %d, nodes within %d of cell (%d, %d): Q -> %.6f, %.1f s\n", r.passes,
+        std::printf("  polish pass %d, nodes within %d of cell (%d, %d): Q -> %.6f, %.1f s\n", r.passes(),
                     last.halfWidth, last.i, last.j, last.qualityAfter, last.seconds);
       std::fflush(stdout);
     };
     const OBlockPolishReport p = polishOBlock(hoh.mesh, options);
     meshed.polishInterrupted = p.interrupted;
-    if (p.interrupted && p.passes == 0)
+    if (p.interrupted && p.passes() == 0)
       std::printf("  polish: interrupted (Ctrl-C) before its first step: the mesh is the elliptic one\n");
     else
       std::printf("  polish: Q %.6f -> %.6f (step %d of %d in %d passes), %.1f s: %s%s\n", p.qualityBefore,
-                  p.qualityAfter, p.bestStep, p.iterations, p.passes, p.seconds,
+                  p.qualityAfter, p.bestStep, p.iterations, p.passes(), p.seconds,
                   p.kept ? "kept" : "not kept (no step raised Q)",
                   p.interrupted ? "; interrupted (Ctrl-C): the rest of the polish not done" : "");
   }

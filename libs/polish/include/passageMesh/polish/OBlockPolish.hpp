@@ -80,7 +80,6 @@ struct PolishPass {
 
 struct OBlockPolishReport {
   bool kept = false;          // the polished nodes replaced the mesh's
-  int passes = 0;             // Levenberg-Marquardt runs: the whole block, then the windows
   int iterations = 0;         // their steps in all (a run stops before `iterations` when it
                               // converges, or `patience` steps after its highest Q)
   int bestStep = 0;           // the step (counted over all passes) whose nodes have the
@@ -89,9 +88,12 @@ struct OBlockPolishReport {
   double qualityAfter = -1;   // the highest Q of the steps' nodes (kept), or qualityBefore
   double seconds = 0;         // wall time of the polish
   std::vector<double> stepQuality;  // Q of each step's nodes, in order, over all passes (-1: invalid)
-  std::vector<PolishPass> passLog;  // every pass in order (passes of them; a pass stopped
-                                    // before its first step is none)
+  std::vector<PolishPass> passLog;  // every Levenberg-Marquardt run in order: the whole
+                                    // block, then the windows (a run stopped before its
+                                    // first step is none)
   bool interrupted = false;   // options.stop ended the polish early
+
+  int passes() const { return static_cast<int>(passLog.size()); }
 };
 
 // Polishes the O-block ("OBlock") of `mesh` in place. Throws std::invalid_argument when the
