@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "../blade/BladeTestData.hpp"
 #include "../passage/PassageTestData.hpp"
 #include "passageMesh/mesh/MeshStatistics.hpp"
@@ -38,6 +40,36 @@ TEST(OuterLoop, PeriodicNodesAreExactImagesAndCountsAddUp) {
   }
   EXPECT_EQ(loop.nodes[loop.lowerPeriodicEnd()].x(), boundary.inletInterfaceX());
   EXPECT_EQ(loop.nodes[loop.upperPeriodicEnd() % 300].x(), boundary.outletInterfaceX());
+}
+
+TEST(OuterLoop, TheSplitsMoveTheSidesCountsBetweenTheInterfaces) {
+  const BladeShape blade(testData::typicalTurbineBlade());
+  const double C = blade.parameters().chord;
+  MeshingParameters m;
+  m.alphaCamber = 0.6;
+  const PassageBoundary boundary(blade, paperCondition(C), m);
+  auto loopWith = [&](double splitIn, double splitOut) {
+    return buildOuterLoop(boundary, 300, 140, blade.leadingEdge().y(), blade.trailingEdge().y(),
+                          splitIn, splitOut);
+  };
+  const OuterLoop edges = loopWith(0, 0), moved = loopWith(0.2, -0.2);
+  // The outlet split down: the lower side gives outlet nodes to the upper side's outlet
+  // piece; the inlet split up: the upper side gives inlet nodes to the lower side's.
+  EXPECT_LT(moved.outletLower, edges.outletLower);
+  EXPECT_GT(moved.outletUpper, edges.outletUpper);
+  EXPECT_GT(moved.inletLower, edges.inletLower);
+  EXPECT_LT(moved.inletUpper, edges.inletUpper);
+  // The interfaces stay uniform over the whole pitch: the seam node sits where the counts put it.
+  const double pitch = boundary.pitch(), yLowB = boundary.lowerY(boundary.outletInterfaceX());
+  EXPECT_NEAR(moved.nodes[0].y() - yLowB, pitch * moved.outletLower / (moved.outletLower + moved.outletUpper), 1e-12 * C);
+  // To the corners and beyond: every piece keeps a node, the pairs stay exact.
+  for (const double split : {-0.5, 0.5}) {
+    const OuterLoop extreme = loopWith(split, split);
+    EXPECT_GE(std::min({extreme.outletLower, extreme.inletLower, extreme.inletUpper, extreme.outletUpper}), 1) << split;
+    EXPECT_EQ(extreme.outletLower + 2 * extreme.periodic + extreme.inletLower + extreme.inletUpper + extreme.outletUpper, 300);
+    for (int k = 0; k <= extreme.periodic; ++k)
+      EXPECT_EQ(extreme.nodes[extreme.lowerPeriodicEnd() - k].x(), extreme.nodes[extreme.upperPeriodicBegin() + k].x());
+  }
 }
 
 TEST(OuterLoop, PeriodicSpacingMeetsTheInterfaceSpacingAtTheCorners) {
@@ -218,6 +250,31 @@ TEST(HohMesh, MovesTheNodeClusteringTowardTheDefaultsWhereTheEdgesFold) {
   EXPECT_NE(hoh.parametersMoved.find("node clustering halfway to the defaults'"), std::string::npos)
       << hoh.parametersMoved;
   EXPECT_EQ(hoh.firstTryProblem.find("the smoothed lines fold"), 0u) << hoh.firstTryProblem;
+}
+
+// Draw 4 of the robustness sweep (seed 20261122) at the defaults meshes, but with both
+// interface splits moved half a pitch (the inlet's down, the outlet's up) its lines fold,
+// also with the outer loop and the clustering moved; with the splits halfway back it meshes.
+TEST(HohMesh, MovesTheInterfaceSplitsTowardTheDefaultsWhereTheLinesFold) {
+  const PassageDraw d = samplePassages(500, 20261122)[4];
+  const BladeShape blade(d.blade);
+  MeshingParameters p = MeshingParameters::defaults(d.blade.chord);
+  ASSERT_TRUE(buildHohMesh(blade, d.condition, p).valid);
+  p.splitIn = -0.5;
+  p.splitOut = 0.5;
+  HohMeshOptions without;
+  without.splitMoves = false;
+  const HohMesh folded = buildHohMesh(blade, d.condition, p, without);
+  ASSERT_FALSE(folded.valid);
+
+  const HohMesh hoh = buildHohMesh(blade, d.condition, p);
+  ASSERT_TRUE(hoh.valid) << hoh.problem;
+  EXPECT_DOUBLE_EQ(hoh.parameters.splitIn, -0.25);
+  EXPECT_DOUBLE_EQ(hoh.parameters.splitOut, 0.25);
+  EXPECT_EQ(hoh.parameters.nT, p.nT);
+  EXPECT_NE(hoh.parametersMoved.find("splitOut 0.5 -> 0.25"), std::string::npos) << hoh.parametersMoved;
+  EXPECT_NE(hoh.parametersMoved.find("interface splits halfway to the defaults'"), std::string::npos)
+      << hoh.parametersMoved;
 }
 
 // Draw 284 of the robustness sweep (seed 20261122; clearance 0.076 chord; draw 475 was

@@ -7,14 +7,17 @@ using namespace passageMesh;
 TEST(MeshingParameterSpace, IsTheMethodRangeBoxWithIntegerNt) {
   const BoxProblem box = meshingParameterProblem(0.2);
   box.check();
-  ASSERT_EQ(box.dimension(), 8);
+  ASSERT_EQ(box.dimension(), 10);
   EXPECT_DOUBLE_EQ(box.lower[0], -0.1);
   EXPECT_DOUBLE_EQ(box.upper[1], 0.1);
   EXPECT_EQ(box.lower[5], 100);
   EXPECT_EQ(box.upper[5], 1000);
-  for (int k = 0; k < 8; ++k) EXPECT_EQ(box.isInteger(k), k == 5) << k;
+  for (int k = 0; k < 10; ++k) EXPECT_EQ(box.isInteger(k), k == 5) << k;
   EXPECT_EQ(box.name(5), "nT");
   EXPECT_EQ(box.name(6), "gammaLE");
+  EXPECT_EQ(box.name(8), "splitIn");
+  EXPECT_DOUBLE_EQ(box.lower[9], -0.5);  // splitOut, in pitches whatever the chord
+  EXPECT_DOUBLE_EQ(box.upper[9], 0.5);
 }
 
 TEST(MeshingParameterSpace, RoundTripsAndRoundsNt) {

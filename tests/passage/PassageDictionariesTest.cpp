@@ -74,6 +74,13 @@ TEST(MeshDict, MissingFileGivesDefaultsAndOutOfRangeIsClippedWithAWarning) {
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("betaIn"), std::string::npos);
   EXPECT_THROW(readMeshDict(writeTemp("n.xml", "<meshDict><beta>1</beta></meshDict>"), 0.1), InputError);
+  // A meshDict written before the splits existed reads with them at 0 (the method's outer
+  // loop); a split beyond half a pitch is clipped with a warning.
+  EXPECT_EQ(p.splitIn, 0.0);
+  EXPECT_EQ(p.splitOut, 0.0);
+  warnings.clear();
+  EXPECT_DOUBLE_EQ(readMeshDict(writeTemp("s.xml", "<meshDict><splitOut>-0.7</splitOut></meshDict>"), 0.1, &warnings).splitOut, -0.5);
+  EXPECT_EQ(warnings.size(), 1u);
 }
 
 TEST(MeshDict, WritesAndReadsBack) {
@@ -81,6 +88,7 @@ TEST(MeshDict, WritesAndReadsBack) {
   p.yIn = -0.0123;
   p.nT = 517;
   p.gammaTe = 2.5;
+  p.splitOut = -0.25;
   const auto file = writeTemp("w.xml", "");
   writeMeshDict(file, p);
   EXPECT_EQ(readMeshDict(file, 0.1).toArray(), p.toArray());

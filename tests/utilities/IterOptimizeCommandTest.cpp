@@ -68,7 +68,7 @@ History readHistory(const fs::path& dir) {
   return h;
 }
 
-constexpr int qColumn = 9, bestColumn = 10;  // evaluation, 8 parameters, Q, bestQ
+constexpr int qColumn = 11, bestColumn = 12;  // evaluation, 10 parameters, Q, bestQ
 
 MeshingParameters parametersOf(const std::vector<double>& row) {
   std::array<double, MeshingParameters::size> v;
@@ -119,7 +119,7 @@ TEST(IterOptimizeCommand, WritesTheBestParametersAndTheHistory) {
   EXPECT_NE(r.err.find("12/12 evaluations"), std::string::npos) << r.err;
 
   const History h = readHistory(dir);
-  EXPECT_EQ(h.header, "evaluation,yIn,yOut,alphaCamber,betaIn,betaOut,nT,gammaLE,gammaTE,Q,bestQ");
+  EXPECT_EQ(h.header, "evaluation,yIn,yOut,alphaCamber,betaIn,betaOut,nT,gammaLE,gammaTE,splitIn,splitOut,Q,bestQ");
   ASSERT_EQ(h.rows.size(), 12u);
   const std::size_t best = expectRunningBest(h);
 

@@ -283,7 +283,7 @@ HohMesh meshWithTries(const BladeShape& blade, const PassageCondition& condition
   OuterLoop outer;
   try {
     outer = buildOuterLoop(boundary, nT, lowerIntervals, blade.leadingEdge().y(),
-                           blade.trailingEdge().y());
+                           blade.trailingEdge().y(), parameters.splitIn, parameters.splitOut);
   } catch (const std::invalid_argument& e) {
     result.problem = e.what();
     return result;
@@ -429,17 +429,27 @@ HohMesh buildHohMesh(const BladeShape& blade, const PassageCondition& condition,
       reasons = why;
     }
   }
-  if (options.clusteringMoves) {
-    const MeshingParameters defaults = MeshingParameters::defaults(blade.parameters().chord);
+  // A pair of parameters halfway to the defaults', then to them; `p` ends with them there.
+  const MeshingParameters defaults = MeshingParameters::defaults(blade.parameters().chord);
+  auto towardDefaults = [&](double MeshingParameters::*a, double MeshingParameters::*b,
+                            const std::string& what) -> std::optional<HohMesh> {
     for (double t : {0.5, 1.0}) {
       MeshingParameters q = p;
-      q.gammaLe = p.gammaLe + t * (defaults.gammaLe - p.gammaLe);
-      q.gammaTe = p.gammaTe + t * (defaults.gammaTe - p.gammaTe);
-      if (q.gammaLe == p.gammaLe && q.gammaTe == p.gammaTe) break;
-      if (auto m = attempt(q, t < 1 ? "node clustering halfway to the defaults'" : "the defaults' node clustering"))
-        return std::move(*m);
+      q.*a = p.*a + t * (defaults.*a - p.*a);
+      q.*b = p.*b + t * (defaults.*b - p.*b);
+      if (q.*a == p.*a && q.*b == p.*b) break;
+      if (auto m = attempt(q, t < 1 ? what + " halfway to the defaults'" : "the defaults' " + what)) return m;
     }
-  }
+    p.*a = defaults.*a;
+    p.*b = defaults.*b;
+    return std::nullopt;
+  };
+  if (options.clusteringMoves)
+    if (auto m = towardDefaults(&MeshingParameters::gammaLe, &MeshingParameters::gammaTe, "node clustering"))
+      return std::move(*m);
+  if (options.splitMoves)
+    if (auto m = towardDefaults(&MeshingParameters::splitIn, &MeshingParameters::splitOut, "interface splits"))
+      return std::move(*m);
   first.problem += failures;
   return first;
 }

@@ -46,15 +46,19 @@ std::vector<double> periodicArcPositions(double length, int intervals, double in
 }
 
 OuterLoop buildOuterLoop(const PassageBoundary& boundary, int nT, int lowerSideIntervals,
-                         double leadingEdgeY, double trailingEdgeY) {
+                         double leadingEdgeY, double trailingEdgeY, double splitIn,
+                         double splitOut) {
   const double xA = boundary.inletInterfaceX(), xB = boundary.outletInterfaceX();
   const double pitch = boundary.pitch();
   const double yLowA = boundary.lowerY(xA), yLowB = boundary.lowerY(xB);
   const ArcLengthTable arc = periodicArcLength(boundary, 2000);
-  // Where the edges face the interfaces, kept a tenth of the pitch inside them.
-  const double margin = 0.1 * pitch;
-  const double yMid = std::clamp(leadingEdgeY, yLowA + margin, yLowA + pitch - margin);
-  const double ySeam = std::clamp(trailingEdgeY, yLowB + margin, yLowB + pitch - margin);
+  // The splits: where the edges face the interfaces, kept a tenth of the pitch inside
+  // them, then moved as asked and kept a hundredth inside (each piece keeps a node).
+  const double margin = 0.1 * pitch, splitMargin = 0.01 * pitch;
+  const double yMid = std::clamp(std::clamp(leadingEdgeY, yLowA + margin, yLowA + pitch - margin) + splitIn * pitch,
+                                 yLowA + splitMargin, yLowA + pitch - splitMargin);
+  const double ySeam = std::clamp(std::clamp(trailingEdgeY, yLowB + margin, yLowB + pitch - margin) + splitOut * pitch,
+                                  yLowB + splitMargin, yLowB + pitch - splitMargin);
 
   const int upperSideIntervals = nT - lowerSideIntervals;
   // The interface pieces' lengths on each side of the loop (the periodic segments have the

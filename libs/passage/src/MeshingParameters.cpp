@@ -47,7 +47,7 @@ MeshingParameters MeshingParameters::defaults(double chord) {
 }
 
 std::array<double, MeshingParameters::size> MeshingParameters::toArray() const {
-  return {yIn, yOut, alphaCamber, betaIn, betaOut, static_cast<double>(nT), gammaLe, gammaTe};
+  return {yIn, yOut, alphaCamber, betaIn, betaOut, static_cast<double>(nT), gammaLe, gammaTe, splitIn, splitOut};
 }
 
 MeshingParameters MeshingParameters::fromArray(const std::array<double, size>& v) {
@@ -60,6 +60,8 @@ MeshingParameters MeshingParameters::fromArray(const std::array<double, size>& v
   p.nT = static_cast<int>(std::lround(v[5]));
   p.gammaLe = v[6];
   p.gammaTe = v[7];
+  p.splitIn = v[8];
+  p.splitOut = v[9];
   return p;
 }
 
@@ -74,6 +76,8 @@ const std::array<MeshingParameterInfo, MeshingParameters::size>& MeshingParamete
       {"nT", 100.0, 1000.0, false, true},
       {"gammaLE", 0.0, 5.0, false, false},
       {"gammaTE", 0.0, 5.0, false, false},
+      {"splitIn", -0.5, 0.5, false, false},
+      {"splitOut", -0.5, 0.5, false, false},
   }};
   return rows;
 }

@@ -26,9 +26,11 @@ PassageCondition sampleCondition(double chord, std::mt19937_64& rng) {
 }
 
 MeshingParameters sampleMeshingParameters(double chord, std::mt19937_64& rng) {
-  std::array<double, MeshingParameters::size> x;
+  // The method's eight only (the random stream of every sweep and validation set stays
+  // that of the eight-parameter table); the splits stay at 0, the method's outer loop.
+  auto x = MeshingParameters{}.toArray();
   const auto lo = MeshingParameters::lowerBounds(chord), hi = MeshingParameters::upperBounds(chord);
-  for (std::size_t k = 0; k < x.size(); ++k) x[k] = between(rng, lo[k], hi[k]);
+  for (int k = 0; k < MeshingParameters::methodSize; ++k) x[k] = between(rng, lo[k], hi[k]);
   return MeshingParameters::fromArray(x);
 }
 

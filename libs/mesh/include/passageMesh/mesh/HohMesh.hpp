@@ -72,6 +72,9 @@ struct HohMeshOptions {
   // Then gammaLE and gammaTE halfway to the defaults', then to them: the wall nodes
   // clustered enough at the edges for their curvature.
   bool clusteringMoves = true;
+  // Then (on top of the defaults' clustering where that was tried) splitIn and splitOut
+  // halfway to the defaults', then to them: the method's outer loop.
+  bool splitMoves = true;
   EllipticOptions elliptic;
 };
 

@@ -16,7 +16,10 @@
 //   outlet up   d .. nT (= node 0 again)          outletUpper
 //
 // The counts share the blade's: the lower side's nodes face outlet-low, the lower periodic
-// segment and the inlet interface's lower part, the upper side's nodes the rest, in
+// segment and the inlet interface's lower part, the upper side's nodes the rest. Where the
+// two sides meet on each interface (the split) is the edge's height, kept a tenth of the
+// pitch inside the periodic boundaries, moved by splitIn / splitOut pitches (and then kept
+// a hundredth of the pitch inside); the counts are in
 // proportion to the pieces' lengths (the periodic count the mean of both sides' shares,
 // rounded once; each side's interface pieces split the rest). Both periodic segments
 // carry the same count and the same x values, bit for bit: y_upper = y_lower + pitch.
@@ -50,9 +53,11 @@ std::vector<double> periodicArcPositions(double length, int intervals, double in
                                          double outletSpacing);
 
 // `lowerSideIntervals`: the blade nodes from the trailing edge (i = 0) to the leading edge
-// (i = lowerSideIntervals); `nT` nodes in all. Throws std::invalid_argument when a piece
-// would get no interval.
+// (i = lowerSideIntervals); `nT` nodes in all. `splitIn`, `splitOut`: the splits' moves
+// in pitches (MeshingParameters). Throws std::invalid_argument when a piece would get no
+// interval.
 OuterLoop buildOuterLoop(const PassageBoundary& boundary, int nT, int lowerSideIntervals,
-                         double leadingEdgeY, double trailingEdgeY);
+                         double leadingEdgeY, double trailingEdgeY, double splitIn = 0,
+                         double splitOut = 0);
 
 }  // namespace passageMesh

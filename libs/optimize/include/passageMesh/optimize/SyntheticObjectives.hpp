@@ -1,5 +1,5 @@
 #pragma once
-// Cheap objectives with known maxima in the meshing-parameter box (chord 1, nT integer),
+// Cheap objectives with known maxima in the box of the method's eight meshing parameters (chord 1, nT integer),
 // standing in for the mesh quality Q in the optimiser's tests and benchmark. Each has its
 // maximum 1 at the same point inside the box, with nT = 437 an integer.
 #include <Eigen/Core>

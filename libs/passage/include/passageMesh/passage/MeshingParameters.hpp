@@ -18,7 +18,11 @@ struct MeshingParameterInfo {
 };
 
 struct MeshingParameters {
-  static constexpr int size = 8;
+  static constexpr int size = 10;
+  // The method's eight (method.md section 1), first in the table: the policy's action and
+  // what PassageSampler draws. The two after them (splitIn, splitOut) are this mesher's
+  // own; at 0 they give the outer loop of the method's rule (docs/elliptic-smoothing.md).
+  static constexpr int methodSize = 8;
 
   double yIn = 0;           // vertical offset of the periodic boundary at the inlet [m]
   double yOut = -0.01;      // ... at the outlet [m]
@@ -28,6 +32,11 @@ struct MeshingParameters {
   int nT = 372;             // O-block nodes around the blade
   double gammaLe = 3.1;     // node clustering towards the leading edge (0 = none)
   double gammaTe = 2.95;    // ... towards the trailing edge
+  // Where the O-block's lower blade side hands over to the upper one on the inlet and
+  // outlet interfaces: moved from the leading / trailing edge's height by this many
+  // pitches (up > 0). Which wall nodes' lines reach the periodic segments follows from it.
+  double splitIn = 0;
+  double splitOut = 0;
 
   // The defaults of etc/meshDictDefaults.xml for a blade of the given chord (the member
   // initialisers above mirror that file for a chord of 1 m, where its lengths in chords
@@ -38,7 +47,8 @@ struct MeshingParameters {
   static MeshingParameters fromArray(const std::array<double, size>& v);  // nT rounded
   static const std::array<std::string, size>& names();
   // The table, in the order above: yIn, yOut in [-0.5C, 0.5C], alphaCamber [0, 1],
-  // betaIn, betaOut [0.1, 0.9], nT [100, 1000], gammaLe, gammaTe [0, 5].
+  // betaIn, betaOut [0.1, 0.9], nT [100, 1000], gammaLe, gammaTe [0, 5], splitIn,
+  // splitOut [-0.5, 0.5] (pitches).
   static const std::array<MeshingParameterInfo, size>& table();
   // The range box for a chord C (lengths in metres).
   static std::array<double, size> lowerBounds(double chord);

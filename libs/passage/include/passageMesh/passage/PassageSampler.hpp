@@ -17,8 +17,8 @@ namespace passageMesh {
 // Uniform in PassageConditionRange for a blade of this chord [m]; nO rounded.
 PassageCondition sampleCondition(double chord, std::mt19937_64& rng);
 
-// Uniform in the meshing-parameter box (MeshingParameters::lowerBounds .. upperBounds);
-// nT rounded.
+// Uniform in the box of the method's eight meshing parameters (MeshingParameters::lowerBounds
+// .. upperBounds); nT rounded; splitIn, splitOut 0.
 MeshingParameters sampleMeshingParameters(double chord, std::mt19937_64& rng);
 
 struct PassageDraw {
