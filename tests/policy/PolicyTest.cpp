@@ -1,5 +1,6 @@
 // Policy files: an ensemble's action is the mean of its members' actions, its episodes
-// their sum; ill-formed ensembles are refused with the file named.
+// their sum; ill-formed ensembles are refused with the file named; policies written before
+// the splits were meshing parameters are read with them at 0.
 #include "passageMesh/policy/Policy.hpp"
 
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 
 #include "../TestFiles.hpp"
 #include "passageMesh/blade/BladeSampler.hpp"
+#include "passageMesh/core/EtcFiles.hpp"
 #include "passageMesh/core/InputError.hpp"
 
 using namespace passageMesh;
@@ -112,4 +114,31 @@ TEST(Policy, AnIllFormedEnsembleIsRefusedWithItsFileNamed) {
   single.replace(single.find("</policy>"), 9, "<members>a/policy.xml</members>\n</policy>");
   std::ofstream(dir / "a" / "withMembers.xml") << single;
   expectError(dir / "a" / "withMembers.xml", "<members> belongs to an ensemble's file");
+}
+
+// A policy written before the splits were meshing parameters (the shipped ensemble's
+// members, 2026-12-06) has the method's eight actions; it is still read, and its meshes
+// have the splits at 0, the method's outer loop, exactly.
+TEST(Policy, APolicyWithoutTheSplitsInItsActionMeshesWithThemAtZero) {
+  const Policy old = Policy::load(findEtcFile("policy/seed1/policy.xml"));
+  EXPECT_EQ(old.layout().actionSize, MeshingParameters::methodSize);
+  BladeSampler sampler(BladeParameterRange::readDefault(), 5);
+  const BladeParameters blade = sampler.next();
+  PassageCondition condition;
+  condition.pitch = 0.8 * blade.chord;
+  condition.xIn = condition.xOut = 0.5 * blade.chord;
+  condition.firstCellHeight = 1.1e-4 * blade.chord;
+  condition.nO = 30000;
+  const PolicyAction a = old.act(old.state(blade, condition));
+  EXPECT_EQ(a[8], 0.0);
+  EXPECT_EQ(a[9], 0.0);
+  const MeshingParameters p = old.meshingParameters(blade, condition);
+  EXPECT_EQ(p.splitIn, 0.0);
+  EXPECT_EQ(p.splitOut, 0.0);
+  EXPECT_GT(std::abs(a[0]) + std::abs(a[5]), 0.0);  // the method's eight come from the network
+
+  // A policy of this build has all ten.
+  const auto dir = testData::tempFolder("policyTenActions");
+  EXPECT_EQ(Policy::load(writeMember(dir, "ten", 3, 1)).layout().actionSize, policyActionSize);
+  EXPECT_EQ(policyActionSize, MeshingParameters::size);
 }

@@ -160,7 +160,8 @@ TEST(PolicyTrainer, PassageTrainingGivesTheSameWeightsOnOneOrTwoThreads) {
   PolicyTrainer a(o, passages, one), b(o, passages, two);
   ASSERT_TRUE(a.run(nullptr, {}));
   ASSERT_TRUE(b.run(nullptr, {}));
-  EXPECT_EQ(fingerprint(a.learner(), 24, 8), fingerprint(b.learner(), 24, 8));
+  EXPECT_EQ(fingerprint(a.learner(), policyStateSize, policyActionSize),
+            fingerprint(b.learner(), policyStateSize, policyActionSize));
   ASSERT_EQ(a.validationCurve().size(), 1u);
   EXPECT_EQ(a.validationCurve()[0].meanReward, b.validationCurve()[0].meanReward);
   std::vector<double> rewards = a.buffer().recentRewards(32);

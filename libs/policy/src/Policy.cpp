@@ -61,15 +61,17 @@ std::string joined(const Container& values) {
   return s.str();
 }
 
-// This build's action layout (the state's comes from the trainer's or the file's scaling).
+// This build's action layout for the first `size` meshing parameters (the state's comes
+// from the trainer's or the file's scaling): all of them, or the method's eight of a
+// policy written before the splits were parameters (policyActionSize's comment).
 struct PolicyDescription {
-  std::array<double, policyActionSize> actionLower{}, actionUpper{};
-  std::array<std::string, policyActionSize> actionNames;
-  PolicyDescription() {
-    for (int k = 0; k < policyActionSize; ++k) {
-      actionLower[k] = MeshingParameters::table()[k].lower;
-      actionUpper[k] = MeshingParameters::table()[k].upper;
-      actionNames[k] = MeshingParameters::table()[k].name;
+  std::vector<double> actionLower, actionUpper;
+  std::vector<std::string> actionNames;
+  explicit PolicyDescription(int size = policyActionSize) {
+    for (int k = 0; k < size; ++k) {
+      actionLower.push_back(MeshingParameters::table()[k].lower);
+      actionUpper.push_back(MeshingParameters::table()[k].upper);
+      actionNames.push_back(MeshingParameters::table()[k].name);
     }
   }
 };
@@ -99,8 +101,8 @@ void writePolicyFiles(const std::filesystem::path& xmlFile, const ActorCritic& l
   std::filesystem::path actorFile = xmlFile;
   actorFile.replace_extension(".pt");
   learner.saveActor(actorFile);
-  const PolicyDescription description;
   const NetworkLayout& layout = learner.layout();
+  const PolicyDescription description(layout.actionSize);
   Dictionary d("policy");
   d.setComment(
       "passageMesh trained policy (docs/case-format.md). The actor maps the state, scaled to "
@@ -194,7 +196,12 @@ Policy::Actor Policy::Actor::load(const Dictionary& d, const std::filesystem::pa
   d.require(policyKeys());
   const bool format1 = d.text("format") == policyFormat1;
   if (!format1) expectText(d, "format", policyFormat);
-  const PolicyDescription description;
+  // The action: every meshing parameter, or the method's eight (a policy trained before
+  // the splits were parameters; its meshes have them at 0).
+  const int actionSize = d.text("actionNames") == joined(PolicyDescription(MeshingParameters::methodSize).actionNames)
+                             ? MeshingParameters::methodSize
+                             : policyActionSize;
+  const PolicyDescription description(actionSize);
   expectText(d, "stateNames", joined(policyStateNames()));
   Actor a;
   // This build's ranges; every value linear (format 1) until <stateScale> says otherwise.
@@ -220,11 +227,11 @@ Policy::Actor Policy::Actor::load(const Dictionary& d, const std::filesystem::pa
   expectText(d, "actionNames", joined(description.actionNames));
   expectNumbers(d, "stateLower", a.scaling.lower.data(), policyStateSize);
   expectNumbers(d, "stateUpper", a.scaling.upper.data(), policyStateSize);
-  expectNumbers(d, "actionLower", description.actionLower.data(), policyActionSize);
-  expectNumbers(d, "actionUpper", description.actionUpper.data(), policyActionSize);
+  expectNumbers(d, "actionLower", description.actionLower.data(), actionSize);
+  expectNumbers(d, "actionUpper", description.actionUpper.data(), actionSize);
 
   a.layout.stateSize = policyStateSize;
-  a.layout.actionSize = policyActionSize;
+  a.layout.actionSize = actionSize;
   a.layout.leakySlope = d.scalar("leakySlope");
   a.layout.hidden.clear();
   std::istringstream widths(d.text("hiddenLayers"));
@@ -271,10 +278,12 @@ PolicyAction Policy::act(const PolicyState& state) const {
   for (int k = 0; k < policyStateSize; ++k) s(0, k) = state[k];
   const torch::Tensor input = tensorOf(s);
   PolicyAction action{};
+  // What a policy without the splits in its action gives for them: the method's outer loop.
+  static const PolicyAction withoutSplits = policyAction(MeshingParameters{}, 1.0);
   std::vector<Actor>& actors = members_->actors;  // forward() is not const in LibTorch
   for (Actor& actor : actors) {
     const PolicyBatch a = batchOf(actor.network->forward(input));
-    for (int k = 0; k < policyActionSize; ++k) action[k] += a(0, k);
+    for (int k = 0; k < policyActionSize; ++k) action[k] += k < actor.layout.actionSize ? a(0, k) : withoutSplits[k];
   }
   // A single actor's action exactly as its network gives it (x / 1 == x).
   for (double& a : action) a /= static_cast<double>(actors.size());

@@ -124,7 +124,7 @@ PolicyAction policyAction(const MeshingParameters& parameters, double chord) {
 }
 
 MeshingParameters meshingParametersOf(const PolicyAction& action, double chord) {
-  auto v = MeshingParameters{}.toArray();  // beyond the action: the splits at 0
+  std::array<double, MeshingParameters::size> v;
   const auto lo = MeshingParameters::lowerBounds(chord), hi = MeshingParameters::upperBounds(chord);
   for (int k = 0; k < policyActionSize; ++k) v[k] = fromUnit(action[k], lo[k], hi[k]);
   return MeshingParameters::fromArray(v);

@@ -9,10 +9,10 @@
 // except the edge radii, whose range spans 2.5-3.5 decades: those are mapped linearly in
 // their logarithm (policy format 2), so that a sharp edge (1e-4 chord) and a sharper one
 // are told apart (format 1, the linear map, crowds all sharp edges near -1).
-// Action (8 values): the method's meshing parameters (the first MeshingParameters::methodSize
-// of MeshingParameters::table(), in its order), each mapped linearly from its range
-// (lengths in chords) to [-1, 1]. The mesher's own two (splitIn, splitOut) are not in the
-// action: a policy's meshes have them at 0.
+// Action (10 values): the meshing parameters in MeshingParameters::table() order, each
+// mapped linearly from its range (lengths in chords) to [-1, 1]. Policy files written before
+// the splits (splitIn, splitOut) were meshing parameters have the method's eight only; they
+// are still read, and their meshes have the splits at 0 (Policy::act).
 #include <array>
 #include <string>
 #include <vector>
@@ -25,7 +25,7 @@
 namespace passageMesh {
 
 constexpr int policyStateSize = 24;
-constexpr int policyActionSize = MeshingParameters::methodSize;
+constexpr int policyActionSize = MeshingParameters::size;
 using PolicyState = std::array<double, policyStateSize>;
 using PolicyAction = std::array<double, policyActionSize>;
 
@@ -56,8 +56,8 @@ PolicyState policyState(const BladeParameters& blade, const PassageCondition& co
 // One line per state value outside [-1, 1]: the policy was not trained there.
 std::vector<std::string> stateOutsideTraining(const PolicyState& state);
 
-// The action of a set of meshing parameters for a blade of this chord (their first eight),
-// and back (splitIn, splitOut 0). Action values outside [-1, 1] are clipped; nT is rounded.
+// The action of a set of meshing parameters for a blade of this chord, and back. Action
+// values outside [-1, 1] are clipped; nT is rounded.
 PolicyAction policyAction(const MeshingParameters& parameters, double chord);
 MeshingParameters meshingParametersOf(const PolicyAction& action, double chord);
 
