@@ -3,7 +3,7 @@
 // parameter over its whole range in steps of 1 % of the range. Writes one CSV per
 // parameter (value, Q; Q = -1 for an invalid mesh) and prints the largest change of Q
 // between neighbouring steps where both meshes are valid (docs/benchmarks.md); draws all
-// eight curves into OUTPUT_DIR/TUTORIAL-qualityAlongParameters.png. With PARAMETER only
+// ten curves into OUTPUT_DIR/TUTORIAL-qualityAlongParameters.png. With PARAMETER only
 // that one (its CSV and the table row, no picture).
 //
 //   build/bench/qualityAlongParameters TUTORIAL OUTPUT_DIR [threads=2] [PARAMETER]
@@ -48,8 +48,8 @@ int main(int argc, char** argv) {
   std::printf("| parameter | steps | valid | steps with |dQ| > 0.005 | largest |dQ| between valid neighbours | at |\n"
               "|---|---|---|---|---|---|\n");
   GnuplotRun gnuplot;
-  std::string script = gnuplotPngTerminal(1600, 900) + gnuplot.output(output / (name + "-qualityAlongParameters.png")) +
-                       "set multiplot layout 2,4 title " + gnuplotQuoted(name + ": Q along each meshing parameter, the others at the defaults (invalid: not drawn)") + "\n"
+  std::string script = gnuplotPngTerminal(2000, 900) + gnuplot.output(output / (name + "-qualityAlongParameters.png")) +
+                       "set multiplot layout 2," + std::to_string((MeshingParameters::size + 1) / 2) + " title " + gnuplotQuoted(name + ": Q along each meshing parameter, the others at the defaults (invalid: not drawn)") + "\n"
                        "set datafile separator ','\nset key off\nset grid\nset ylabel 'Q'\n";
   for (int k = 0; k < MeshingParameters::size; ++k) {
     if (!only.empty() && names[k] != only) continue;
