@@ -356,3 +356,47 @@ TEST(PolicyTrainer, StartingFromAnotherRunMaySwitchTheQualityNetworkToBounded) {
     EXPECT_NE(std::string(e.what()).find("the checkpoint's networks are"), std::string::npos) << e.what();
   }
 }
+
+// -actorFrom: a new run's actor starts as a trained policy's. An eight-action policy (the
+// shipped ensemble's members) gives its eight actions, and the splits start at exactly 0;
+// an ensemble, another network or another state scaling is refused with the file named.
+TEST(PolicyTrainer, TheActorStartsAsATrainedPolicysWithTheSplitsItLacksAtZero) {
+  const PassageEnvironment passages;
+  const auto dir = testData::tempFolder("actorFrom");
+  auto writePolicy = [&](const std::string& name, int actions, std::vector<int> hidden) {
+    const ActorCritic learner(NetworkLayout{policyStateSize, actions, hidden, 0.01, CriticModel::reward},
+                              LearningRates{}, 5);
+    std::filesystem::create_directories(dir / name);
+    writePolicyFiles(dir / name / "policy.xml", learner, passages.stateScaling(), PolicyProvenance{1, 0.5, "test"});
+    return dir / name / "policy.xml";
+  };
+  const Policy eight = Policy::load(writePolicy("eight", MeshingParameters::methodSize, {16, 16}));
+  ThreadRollouts rollouts(1);
+  PolicyTrainer trainer(smallRun(32), passages, rollouts);
+  trainer.startActorFrom(eight, passages.stateScaling());
+  for (std::uint64_t i = 0; i < 3; ++i) {
+    const EpisodeTask task = passages.draw(20261202, i);
+    PolicyState s;
+    std::copy(task.state.begin(), task.state.end(), s.begin());
+    const PolicyAction expected = eight.act(s);
+    const PolicyBatch got = trainer.learner().act(statesOf({task}, policyStateSize));
+    for (int k = 0; k < MeshingParameters::methodSize; ++k) EXPECT_NEAR(got(0, k), expected[k], 1e-6) << k;
+    EXPECT_EQ(got(0, 8), 0.0);
+    EXPECT_EQ(got(0, 9), 0.0);
+  }
+  // Other hidden layers than the run's, another scaling: refused, the file named.
+  const Policy wide = Policy::load(writePolicy("wide", policyActionSize, {32, 16}));
+  try {
+    trainer.startActorFrom(wide, passages.stateScaling());
+    ADD_FAILURE() << "another layout was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("wide"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("layout"), std::string::npos) << e.what();
+  }
+  PolicyStateScaling other = passages.stateScaling();
+  other.logarithmic.fill(false);
+  EXPECT_THROW(trainer.startActorFrom(eight, other), InputError);
+  std::ofstream(dir / "pair.xml") << "<policy><format>passageMesh policy ensemble 1</format>"
+                                     "<members>eight/policy.xml eight/policy.xml</members></policy>\n";
+  EXPECT_THROW(trainer.startActorFrom(Policy::load(dir / "pair.xml"), passages.stateScaling()), InputError);
+}

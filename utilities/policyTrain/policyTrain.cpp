@@ -9,6 +9,8 @@
 //          learning.png
 // -resume continues from policy/checkpoint.pt; -startFrom FILE continues another run (its
 // checkpoint) under this case's settings, e.g. to add searches to a trained policy;
+// -actorFrom POLICY.xml starts a new run's actor as a trained policy's (an eight-action
+// one's splits at 0);
 // -parallel under mpirun spreads the
 // rollouts over the ranks. Exit codes: 0 done, 1 bad input, 130 interrupted by Ctrl-C
 // (a checkpoint was written: run again with -resume).
@@ -83,6 +85,8 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
   const bool resume = cli.values().count("resume") > 0;
   if (resume && cli.values().count("startFrom"))
     throw InputError("command line: -resume and -startFrom: give one (-resume continues this case's run)");
+  if (cli.values().count("actorFrom") && (resume || cli.values().count("startFrom")))
+    throw InputError("command line: -actorFrom starts a new run: not with -resume or -startFrom");
   if (resume) {
     trainer.resume(paths.checkpoint);
     std::printf("policyTrain: resumed at episode %ld from %s\n", trainer.episode(), paths.checkpoint.c_str());
@@ -94,6 +98,12 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
     trainer.resume(from, false);
     std::printf("policyTrain: started at episode %ld from %s, with this case's settings\n", trainer.episode(),
                 from.c_str());
+  } else if (cli.values().count("actorFrom")) {
+    const std::filesystem::path from = cli.values()["actorFrom"].as<std::string>();
+    const Policy start = Policy::load(from);
+    trainer.startActorFrom(start, environment.stateScaling());
+    std::printf("policyTrain: the actor starts as %s's (%d actions; the others at 0), the critic anew\n",
+                from.c_str(), start.layout().actionSize);
   }
   std::printf("policyTrain: %ld episodes in batches of %d, networks %s, seed %llu, %s\n", options.episodes,
               options.batchEpisodes, NetworkLayout{0, 0, options.hidden, options.leakySlope}.hiddenText().c_str(),
@@ -111,6 +121,11 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
       const ValidationRecord s = trainer.validateAction(options.actorStartAction(environment));
       std::printf("policyTrain: the actor's start (%s) on them: mean reward %.17g, median %.17g, %d valid\n",
                   options.actorStartMeshDict.c_str(), s.meanReward, s.medianReward, s.valid);
+    }
+    if (cli.values().count("actorFrom")) {
+      const ValidationRecord s = trainer.validateCurrentPolicy();
+      std::printf("policyTrain: the actor's start on them: mean reward %.17g, median %.17g, %d valid\n",
+                  s.meanReward, s.medianReward, s.valid);
     }
     std::fflush(stdout);
   }
@@ -191,6 +206,9 @@ int main(int argc, char* argv[]) {
         ("startFrom", po::value<std::string>(),
          "start from another run's checkpoint FILE (its weights, optimisers, replay buffer, curves and "
          "episode count; the same networks) and go on with this case's settings")
+        ("actorFrom", po::value<std::string>(),
+         "start the actor as a trained policy FILE's (a single policy of this case's state scaling and "
+         "networks; actions it lacks, the splits of an eight-action policy, at 0); the critic learns anew")
         ("parallel", "spread the rollouts over MPI ranks (run under mpirun)")
         ("episodes", po::value<long>(), "override <episodes> of the dictionary")
         ("threads", po::value<int>(), "override <threads> of the dictionary (0 = all cores)");

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "passageMesh/policy/PolicyNetworks.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
@@ -185,6 +186,21 @@ void ActorCritic::load(torch::serialize::InputArchive& archive) {
     n.validity->load(validity);
     n.validityOptimizer->load(validityOptimizer);
   }
+}
+
+void ActorCritic::startActorFrom(const std::filesystem::path& actorFile, const NetworkLayout& fileLayout) {
+  const NetworkLayout& mine = networks_->layout;
+  if (fileLayout.stateSize != mine.stateSize || fileLayout.hidden != mine.hidden ||
+      fileLayout.actionSize > mine.actionSize || fileLayout.leakySlope != mine.leakySlope)
+    throw std::invalid_argument("the start actor's layout (" + std::to_string(fileLayout.stateSize) + " -> [" +
+                                fileLayout.hiddenText() + "] -> " + std::to_string(fileLayout.actionSize) +
+                                ") does not fit this run's (" + std::to_string(mine.stateSize) + " -> [" +
+                                mine.hiddenText() + "] -> " + std::to_string(mine.actionSize) + ")");
+  FullyConnected start = makeActor(fileLayout);
+  torch::serialize::InputArchive archive;
+  archive.load_from(actorFile.string());
+  start->load(archive);
+  networks_->actor->startFrom(*start);
 }
 
 void ActorCritic::saveActor(const std::filesystem::path& file) const {

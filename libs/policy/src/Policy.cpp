@@ -133,6 +133,7 @@ struct Policy::Actor {
   PolicyStateScaling scaling;
   FullyConnected network{nullptr};
   PolicyProvenance provenance;
+  std::filesystem::path file;  // the .pt
 
   static Actor load(const Dictionary& d, const std::filesystem::path& xmlFile);
 };
@@ -249,6 +250,7 @@ Policy::Actor Policy::Actor::load(const Dictionary& d, const std::filesystem::pa
   if (!std::filesystem::exists(actorFile))
     throw InputError(d.source(), d.line("actor"), "the actor file " + actorFile.string() + " does not exist");
   a.network = makeActor(a.layout);
+  a.file = actorFile;
   try {
     // LibTorch's load takes each tensor's shape from the file, so the shapes the layout
     // asks for are compared afterwards.
@@ -300,6 +302,7 @@ MeshingParameters Policy::meshingParameters(const BladeParameters& blade,
 }
 
 const PolicyStateScaling& Policy::stateScaling() const { return members_->actors.front().scaling; }
+const std::filesystem::path& Policy::actorFile() const { return members_->actors.front().file; }
 
 const NetworkLayout& Policy::layout() const { return members_->actors.front().layout; }
 const PolicyProvenance& Policy::provenance() const { return members_->provenance; }

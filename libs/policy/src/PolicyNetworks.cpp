@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace passageMesh {
 
@@ -37,6 +38,27 @@ void FullyConnectedImpl::startAt(const std::vector<double>& output, double weigh
   for (std::size_t k = 0; k < output.size() && static_cast<long>(k) < last->bias.size(0); ++k) {
     const double v = tanhOutput ? std::atanh(std::clamp(output[k], -0.95, 0.95)) : output[k];
     last->bias[static_cast<long>(k)] = v;
+  }
+}
+
+void FullyConnectedImpl::startFrom(FullyConnectedImpl& other) {
+  torch::NoGradGuard noGrad;
+  auto mine = parameters(), theirs = other.parameters();
+  if (mine.size() != theirs.size()) throw std::invalid_argument("another number of layers");
+  for (std::size_t k = 0; k < mine.size(); ++k) {
+    torch::Tensor& to = mine[k];
+    const torch::Tensor& from = theirs[k];
+    const bool lastLayer = k + 2 >= mine.size();  // the output layer's weight and bias
+    const bool fewerOutputs = lastLayer && from.dim() == to.dim() && from.size(0) < to.size(0) &&
+                              (to.dim() == 1 || from.size(1) == to.size(1));
+    if (from.sizes() == to.sizes()) {
+      to.copy_(from);
+    } else if (fewerOutputs) {
+      to.zero_();
+      to.narrow(0, 0, from.size(0)).copy_(from);
+    } else {
+      throw std::invalid_argument("layer weights of another shape");
+    }
   }
 }
 

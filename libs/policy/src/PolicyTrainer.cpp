@@ -8,6 +8,7 @@
 
 #include "passageMesh/core/InputError.hpp"
 #include "passageMesh/policy/ActionSearch.hpp"
+#include "passageMesh/policy/Policy.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
 #include "TorchTensors.hpp"
 
@@ -437,6 +438,21 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
     std::string what = e.what();
     what = what.substr(0, what.find('\n'));
     throw InputError(name, 0, "corrupt or unreadable checkpoint (" + what + ")");
+  }
+}
+
+void PolicyTrainer::startActorFrom(const Policy& policy, const PolicyStateScaling& scaling) {
+  const std::string file = policy.actorFile().string();
+  if (policy.memberCount() != 1)
+    throw InputError(file, 0, "the actor's start must be a single policy, not an ensemble of " +
+                                  std::to_string(policy.memberCount()));
+  const PolicyStateScaling& theirs = policy.stateScaling();
+  if (theirs.lower != scaling.lower || theirs.upper != scaling.upper || theirs.logarithmic != scaling.logarithmic)
+    throw InputError(file, 0, "the policy scales the state otherwise than this run (<edgeRadii>, etc/bladeParameterRange.xml)");
+  try {
+    learner_.startActorFrom(policy.actorFile(), policy.layout());
+  } catch (const std::invalid_argument& e) {
+    throw InputError(file, 0, e.what());
   }
 }
 

@@ -41,6 +41,11 @@ class ActorCritic {
   ActorCritic& operator=(ActorCritic&&) noexcept;
 
   const NetworkLayout& layout() const;
+  // The actor's weights from a saved actor of `fileLayout` (the same state size and hidden
+  // layers, as many or fewer actions; FullyConnectedImpl::startFrom): actions it lacks start
+  // at 0. The critic and the optimisers' states are left as they are. Throws
+  // std::invalid_argument naming what differs, InputError for an unreadable file.
+  void startActorFrom(const std::filesystem::path& actorFile, const NetworkLayout& fileLayout);
 
   // pi(s) for each row of `states`.
   PolicyBatch act(const PolicyBatch& states) const;

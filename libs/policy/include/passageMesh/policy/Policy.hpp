@@ -53,6 +53,7 @@ class Policy {
   MeshingParameters meshingParameters(const BladeParameters& blade,
                                       const PassageCondition& condition) const;
   const NetworkLayout& layout() const;  // the first member's
+  const std::filesystem::path& actorFile() const;  // the first member's weights (.pt)
   // An ensemble's: the members' episodes summed, its file's <validationMeanReward> and
   // <command> (0 and empty where it has none).
   const PolicyProvenance& provenance() const;

@@ -26,6 +26,10 @@ class FullyConnectedImpl : public torch::nn::Module {
   // scaled by `weightScale` and its bias set so that the output is `output` at zero
   // weights (through atanh for a tanh output; values clipped to +-0.95 there).
   void startAt(const std::vector<double>& output, double weightScale);
+  // Copies `other`'s weights: the same inputs and hidden layers, as many or fewer outputs;
+  // outputs it lacks get zero weights and bias (0 after the tanh). Throws
+  // std::invalid_argument where the layouts differ otherwise.
+  void startFrom(FullyConnectedImpl& other);
 
  private:
   torch::nn::Sequential layers_;

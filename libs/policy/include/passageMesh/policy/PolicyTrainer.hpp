@@ -26,6 +26,8 @@
 
 namespace passageMesh {
 
+class Policy;
+
 // A row of the learning curve, every logEvery episodes.
 struct LearningRecord {
   long episode = 0;
@@ -56,6 +58,12 @@ class PolicyTrainer {
   // settings (the same networks): its weights, optimisers, buffer, curves and episode
   // count carry on under this trainer's settings (policyTrain -startFrom).
   void resume(const std::filesystem::path& checkpoint, bool sameSettings = true);
+  // Starts the actor as a trained policy's (policyTrain -actorFrom): a single policy whose
+  // state was scaled as `scaling` (this run's), with this run's hidden layers and as many or
+  // fewer actions; actions it lacks (the splits of a policy of the method's eight) start at
+  // 0. The critic, buffer and episode count stay a new run's. A mismatch or an ensemble is
+  // an InputError naming the policy file.
+  void startActorFrom(const Policy& policy, const PolicyStateScaling& scaling);
 
   struct Events {
     std::function<void(const PolicyTrainer&)> afterBatch;        // progress lines
