@@ -22,6 +22,7 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   o.imitationWeight = 0.25;
   o.wideNoiseShare = 0.1;
   o.wideNoiseSigma = 0.4;
+  o.actorUpdatesFrom = 8000;
   const auto file = testData::writeTempFile("policyTrainDict", "dict.xml", policyTrainDictXml(o));
   const PolicyTrainOptions back = readPolicyTrainDict(file);
   EXPECT_EQ(policyTrainDictXml(back), policyTrainDictXml(o));
@@ -34,6 +35,7 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   EXPECT_EQ(back.imitationWeight, 0.25);
   EXPECT_EQ(back.wideNoiseShare, 0.1);
   EXPECT_EQ(back.wideNoiseSigma, 0.4);
+  EXPECT_EQ(back.actorUpdatesFrom, 8000);
   EXPECT_EQ(readPolicyTrainDict(file.parent_path() / "missing.xml").episodes, PolicyTrainOptions{}.episodes);
 }
 

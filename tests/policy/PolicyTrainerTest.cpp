@@ -400,3 +400,19 @@ TEST(PolicyTrainer, TheActorStartsAsATrainedPolicysWithTheSplitsItLacksAtZero) {
                                      "<members>eight/policy.xml eight/policy.xml</members></policy>\n";
   EXPECT_THROW(trainer.startActorFrom(Policy::load(dir / "pair.xml"), passages.stateScaling()), InputError);
 }
+
+// <actorUpdatesFrom>: before that episode only the critic learns; the actor is the start's.
+TEST(PolicyTrainer, TheActorWaitsForItsFirstUpdateEpisode) {
+  const ToyEnvironment toy(24, 8, 3);
+  ThreadRollouts rollouts(1);
+  PolicyTrainOptions o = smallRun(64);
+  o.validationPassages = 0;
+  PolicyTrainer straight(o, toy, rollouts);
+  o.actorUpdatesFrom = 64;
+  PolicyTrainer waiting(o, toy, rollouts), fresh(o, toy, rollouts);
+  ASSERT_TRUE(straight.run(nullptr, {}));
+  ASSERT_TRUE(waiting.run(nullptr, {}));
+  EXPECT_EQ(fingerprint(waiting.learner(), 24, 8).first, fingerprint(fresh.learner(), 24, 8).first);
+  EXPECT_NE(fingerprint(waiting.learner(), 24, 8).second, fingerprint(fresh.learner(), 24, 8).second);
+  EXPECT_NE(fingerprint(straight.learner(), 24, 8).first, fingerprint(fresh.learner(), 24, 8).first);
+}

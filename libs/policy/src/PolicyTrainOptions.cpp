@@ -175,6 +175,7 @@ const std::vector<Key>& keys() {
       {"criticUpdatesPerEpisode", readInteger("criticUpdatesPerEpisode", &O::criticUpdatesPerEpisode, 1),
        [](const O& o) { return std::to_string(o.criticUpdatesPerEpisode); }},
       {"actorUpdateEvery", readInteger("actorUpdateEvery", &O::actorUpdateEvery, 1), [](const O& o) { return std::to_string(o.actorUpdateEvery); }},
+      {"actorUpdatesFrom", readInteger("actorUpdatesFrom", &O::actorUpdatesFrom, 0), [](const O& o) { return std::to_string(o.actorUpdatesFrom); }},
       {"actionBoundPenalty", readPositive("actionBoundPenalty", [](O& o) -> double& { return o.actionBoundPenalty; }, true),
        [](const O& o) { return formatExact(o.actionBoundPenalty); }},
       {"noiseStartSigma", readPositive("noiseStartSigma", [](O& o) -> double& { return o.noiseStartSigma; }, true),

@@ -129,7 +129,7 @@ void PolicyTrainer::learnFrom(const std::vector<double>& state, const std::vecto
       lossSum_ += learner_.updateCritic(s, a, r);
       ++lossCount_;
     }
-    if (episode_ % options_.actorUpdateEvery == 0) {
+    if (episode_ % options_.actorUpdateEvery == 0 && episode_ > options_.actorUpdatesFrom) {
       buffer_.sample(options_.minibatch, minibatchRandom_, s, a, r);
       learner_.updateActor(s, options_.actionBoundPenalty, options_.validityBarrier, imitationBatch());
     }

@@ -29,6 +29,10 @@ struct PolicyTrainOptions {
   double leakySlope = 0.01;
   int criticUpdatesPerEpisode = 1;  // paper: 1
   int actorUpdateEvery = 2;         // episodes per actor update (paper: 2)
+  // No actor updates before this episode (0: from the first, the paper's): the critic
+  // learns first, so that an actor started from a trained policy (policyTrain -actorFrom)
+  // is not pushed along an untrained critic's gradient (docs/policy.md "Ten actions").
+  long actorUpdatesFrom = 0;
   // Weight of the actor's penalty on pre-tanh outputs beyond atanh(0.95), the action at
   // 95 % of its half-range (0: none, the paper's): keeps tanh off its flat ends, where the
   // actor's gradient vanishes and a saturated action cannot come back (docs/policy.md).
