@@ -44,7 +44,8 @@ class ActorCritic {
   // The actor's weights from a saved actor of `fileLayout` (the same state size and hidden
   // layers, as many or fewer actions; FullyConnectedImpl::startFrom): actions it lacks start
   // at 0. The critic and the optimisers' states are left as they are. Throws
-  // std::invalid_argument naming what differs, InputError for an unreadable file.
+  // std::invalid_argument naming what differs. The file is read again here: pass one that
+  // Policy::load has already read and checked (PolicyTrainer::startActorFrom does).
   void startActorFrom(const std::filesystem::path& actorFile, const NetworkLayout& fileLayout);
 
   // pi(s) for each row of `states`.
