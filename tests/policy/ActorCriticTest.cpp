@@ -155,6 +155,28 @@ TEST(ActorCritic, ImitationPullsTheActorToTheDemonstratedActions) {
   EXPECT_LT((bounded.act(s) - 0.95 * onBounds).cwiseAbs().maxCoeff(), 0.01);
 }
 
+// An actor that trains only some outputs keeps the others (and its hidden layers, on which
+// they depend) bit for bit, while the trained ones still reach their targets.
+TEST(ActorCritic, AnActorTrainingSomeOutputsOnlyKeepsTheOthersBitForBit) {
+  NetworkLayout layout{3, 2, {16, 16}, 0.01};
+  PolicyBatch s(4, 3), target(4, 2);
+  s << -0.5, 0.2, 0.9, 0.1, -0.8, 0.3, 0.7, 0.7, -0.2, 0.0, 0.5, -0.6;
+  target << 0.6, -0.4, -0.7, 0.2, 0.3, 0.8, -0.1, -0.9;
+  ActorCritic learner(layout, {1e-2, 1e-3}, 3);
+  learner.trainActorOutputsOnly({1});
+  const PolicyBatch before = learner.act(s);
+  for (int step = 0; step < 3000; ++step) learner.updateActor(s, 0, 0, Imitation{s, target, 10.0});
+  const PolicyBatch after = learner.act(s);
+  EXPECT_GT((before.col(1) - target.col(1)).cwiseAbs().maxCoeff(), 0.3);
+  EXPECT_LT((after.col(1) - target.col(1)).cwiseAbs().maxCoeff(), 0.05);
+  for (Eigen::Index i = 0; i < s.rows(); ++i) EXPECT_EQ(after(i, 0), before(i, 0));
+  // The same steps with every output training move output 0 too.
+  ActorCritic free(layout, {1e-2, 1e-3}, 3);
+  for (int step = 0; step < 600; ++step) free.updateActor(s, 0, 0, Imitation{s, target, 10.0});
+  EXPECT_GT((free.act(s).col(0) - before.col(0)).cwiseAbs().maxCoeff(), 0.3);
+  EXPECT_THROW(learner.trainActorOutputsOnly({2}), std::invalid_argument);
+}
+
 // validityAndBoundedQuality: the quality q = sigmoid(output) fits valid meshes' Q as the
 // unbounded one does, but no input, however far from the data, makes the expected reward
 // leave [-1, 1] (an unbounded q, fitted on the valid meshes only, extrapolates freely).

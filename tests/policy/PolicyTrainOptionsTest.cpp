@@ -23,6 +23,7 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   o.wideNoiseShare = 0.1;
   o.wideNoiseSigma = 0.4;
   o.actorUpdatesFrom = 8000;
+  o.actorTrainedActions = {9, 8};
   const auto file = testData::writeTempFile("policyTrainDict", "dict.xml", policyTrainDictXml(o));
   const PolicyTrainOptions back = readPolicyTrainDict(file);
   EXPECT_EQ(policyTrainDictXml(back), policyTrainDictXml(o));
@@ -36,6 +37,8 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   EXPECT_EQ(back.wideNoiseShare, 0.1);
   EXPECT_EQ(back.wideNoiseSigma, 0.4);
   EXPECT_EQ(back.actorUpdatesFrom, 8000);
+  EXPECT_EQ(back.actorTrainedActions, (std::vector<int>{9, 8}));
+  EXPECT_NE(policyTrainDictXml(o).find("<actorTrainsOnly>splitOut splitIn</actorTrainsOnly>"), std::string::npos);
   EXPECT_EQ(readPolicyTrainDict(file.parent_path() / "missing.xml").episodes, PolicyTrainOptions{}.episodes);
 }
 
@@ -78,6 +81,11 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
   EXPECT_NE(bad("<wideNoiseShare>1.5</wideNoiseShare>").find("bad.xml:2: <wideNoiseShare> is a share of the episodes"),
             std::string::npos) << bad("<wideNoiseShare>1.5</wideNoiseShare>");
   EXPECT_NE(bad("<wideNoiseSigma>0</wideNoiseSigma>").find("bad.xml:2:"), std::string::npos);
+  EXPECT_NE(bad("<actorTrainsOnly>splitIn splitUp</actorTrainsOnly>")
+                .find("bad.xml:2: <actorTrainsOnly> names meshing parameters, each once (yIn yOut alphaCamber"),
+            std::string::npos) << bad("<actorTrainsOnly>splitIn splitUp</actorTrainsOnly>");
+  EXPECT_NE(bad("<actorTrainsOnly>nT nT</actorTrainsOnly>").find("got 'nT'"), std::string::npos);
+  EXPECT_EQ(bad("<actorTrainsOnly></actorTrainsOnly>"), "accepted");
   EXPECT_NE(bad("<epsiodes>10</epsiodes>").find("epsiodes"), std::string::npos);
   EXPECT_NE(bad("<batchEpisodes>3000000000</batchEpisodes>").find("must be in [1, 2147483647]"), std::string::npos);
   EXPECT_NE(bad("<minibatch>200</minibatch><bufferCapacity>100</bufferCapacity>").find("never start"),

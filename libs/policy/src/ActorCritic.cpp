@@ -50,6 +50,7 @@ struct ActorCritic::Networks {
   FullyConnected critic;  // Q(s, a), or q(s, a) of a valid mesh with `validity`
   torch::optim::Adam actorOptimizer;
   torch::optim::Adam criticOptimizer;
+  std::vector<int> trainedActorOutputs;  // empty: all (trainActorOutputsOnly)
   FullyConnected validity{nullptr};  // the logit of p(s, a) (hasValidity(layout.critic))
   std::unique_ptr<torch::optim::Adam> validityOptimizer;
 };
@@ -68,6 +69,14 @@ ActorCritic::ActorCritic(ActorCritic&&) noexcept = default;
 ActorCritic& ActorCritic::operator=(ActorCritic&&) noexcept = default;
 
 const NetworkLayout& ActorCritic::layout() const { return networks_->layout; }
+
+void ActorCritic::trainActorOutputsOnly(const std::vector<int>& outputs) {
+  for (int o : outputs)
+    if (o < 0 || o >= networks_->layout.actionSize)
+      throw std::invalid_argument("the actor has no output " + std::to_string(o) + " (it has " +
+                                  std::to_string(networks_->layout.actionSize) + ")");
+  networks_->trainedActorOutputs = outputs;
+}
 
 PolicyBatch ActorCritic::act(const PolicyBatch& states) const {
   torch::NoGradGuard noGrad;
@@ -142,6 +151,7 @@ double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty, 
     loss = loss + imitation.weight * distance.mean();
   }
   loss.backward();
+  if (!n.trainedActorOutputs.empty()) n.actor->keepOutputGradients(n.trainedActorOutputs);
   n.actorOptimizer.step();
   // The backward pass also left gradients in the critic (and validity); their own steps
   // clear them first.

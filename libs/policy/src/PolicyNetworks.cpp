@@ -62,6 +62,20 @@ void FullyConnectedImpl::startFrom(FullyConnectedImpl& other) {
   }
 }
 
+void FullyConnectedImpl::keepOutputGradients(const std::vector<int>& outputs) {
+  torch::NoGradGuard noGrad;
+  auto all = parameters();
+  const std::size_t outputLayer = all.size() - 2;  // its weight, then its bias
+  for (std::size_t k = 0; k < outputLayer; ++k) all[k].mutable_grad() = torch::Tensor();
+  const long rows = all[outputLayer].size(0);
+  torch::Tensor keep = torch::zeros({rows}, all[outputLayer].options());
+  for (int o : outputs) keep[o] = 1.0;
+  for (std::size_t k = outputLayer; k < all.size(); ++k) {
+    torch::Tensor& grad = all[k].mutable_grad();
+    if (grad.defined()) grad.mul_(all[k].dim() == 2 ? keep.unsqueeze(1) : keep);
+  }
+}
+
 FullyConnected makeActor(const NetworkLayout& layout) {
   return FullyConnected(layout.stateSize, layout.hidden, layout.actionSize, layout.leakySlope, true);
 }

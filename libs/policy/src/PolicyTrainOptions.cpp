@@ -141,6 +141,35 @@ std::function<void(const Dictionary&, PolicyTrainOptions&)> readChoice(const Wor
   };
 }
 
+// Meshing-parameter names (the action's entries), e.g. "splitIn splitOut", as indices into
+// the action; an unknown or repeated name is an InputError listing the known ones.
+std::function<void(const Dictionary&, PolicyTrainOptions&)> readActionNames(const char* name,
+                                                                           std::vector<int> PolicyTrainOptions::*member) {
+  return [=](const Dictionary& d, PolicyTrainOptions& o) {
+    const auto& names = MeshingParameters::names();
+    std::istringstream in(d.text(name));
+    std::vector<int> indices;
+    for (std::string word; in >> word;) {
+      const auto found = std::find(names.begin(), names.end(), word);
+      const int index = static_cast<int>(found - names.begin());
+      if (found == names.end() || std::find(indices.begin(), indices.end(), index) != indices.end()) {
+        std::string known;
+        for (const auto& n : names) known += (known.empty() ? "" : " ") + n;
+        throw InputError(d.source(), d.line(name), "<" + std::string(name) + "> names meshing parameters, each once (" +
+                                                       known + "); got '" + word + "'");
+      }
+      indices.push_back(index);
+    }
+    o.*member = indices;
+  };
+}
+
+std::string actionNamesText(const std::vector<int>& indices) {
+  std::string text;
+  for (int k : indices) text += (text.empty() ? "" : " ") + MeshingParameters::names()[static_cast<std::size_t>(k)];
+  return text;
+}
+
 const std::vector<Key>& keys() {
   using O = PolicyTrainOptions;
   static const std::vector<Key> k{
@@ -176,6 +205,8 @@ const std::vector<Key>& keys() {
        [](const O& o) { return std::to_string(o.criticUpdatesPerEpisode); }},
       {"actorUpdateEvery", readInteger("actorUpdateEvery", &O::actorUpdateEvery, 1), [](const O& o) { return std::to_string(o.actorUpdateEvery); }},
       {"actorUpdatesFrom", readInteger("actorUpdatesFrom", &O::actorUpdatesFrom, 0), [](const O& o) { return std::to_string(o.actorUpdatesFrom); }},
+      {"actorTrainsOnly", readActionNames("actorTrainsOnly", &O::actorTrainedActions),
+       [](const O& o) { return actionNamesText(o.actorTrainedActions); }},
       {"actionBoundPenalty", readPositive("actionBoundPenalty", [](O& o) -> double& { return o.actionBoundPenalty; }, true),
        [](const O& o) { return formatExact(o.actionBoundPenalty); }},
       {"noiseStartSigma", readPositive("noiseStartSigma", [](O& o) -> double& { return o.noiseStartSigma; }, true),

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "passageMesh/policy/NetworkLayout.hpp"
 #include "passageMesh/policy/ReplayBuffer.hpp"
@@ -47,6 +48,14 @@ class ActorCritic {
   // std::invalid_argument naming what differs. The file is read again here: pass one that
   // Policy::load has already read and checked (PolicyTrainer::startActorFrom does).
   void startActorFrom(const std::filesystem::path& actorFile, const NetworkLayout& fileLayout);
+
+  // From now on updateActor moves only these outputs' rows of the actor's output layer; its
+  // hidden layers and the other outputs keep their weights bit for bit (empty: every weight
+  // learns, the paper's). For an actor started from a trained policy that lacked these
+  // actions (startActorFrom): the new actions learn on the trained features while the
+  // trained ones stay as they were (docs/policy.md "Ten actions"). Throws
+  // std::invalid_argument for an output outside the actor's.
+  void trainActorOutputsOnly(const std::vector<int>& outputs);
 
   // pi(s) for each row of `states`.
   PolicyBatch act(const PolicyBatch& states) const;

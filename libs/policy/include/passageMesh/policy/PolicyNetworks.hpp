@@ -30,6 +30,10 @@ class FullyConnectedImpl : public torch::nn::Module {
   // outputs it lacks get zero weights and bias (0 after the tanh). Throws
   // std::invalid_argument where the layouts differ otherwise.
   void startFrom(FullyConnectedImpl& other);
+  // After a backward pass: drops the gradients of every layer but the output layer (an
+  // optimiser then leaves them as they are) and zeroes the output layer's gradient rows of
+  // the outputs not listed, so that a step moves only the listed outputs' rows.
+  void keepOutputGradients(const std::vector<int>& outputs);
 
  private:
   torch::nn::Sequential layers_;

@@ -33,6 +33,12 @@ struct PolicyTrainOptions {
   // learns first, so that an actor started from a trained policy (policyTrain -actorFrom)
   // is not pushed along an untrained critic's gradient (docs/policy.md "Ten actions").
   long actorUpdatesFrom = 0;
+  // The actions whose output rows the actor's steps move, as indices into the action (the
+  // dictionary names them: <actorTrainsOnly>splitIn splitOut</actorTrainsOnly>); the
+  // hidden layers and the other actions keep their start weights. Empty: every weight
+  // learns (the paper's). For a start from a trained policy without these actions
+  // (policyTrain -actorFrom; ActorCritic::trainActorOutputsOnly, docs/policy.md).
+  std::vector<int> actorTrainedActions;
   // Weight of the actor's penalty on pre-tanh outputs beyond atanh(0.95), the action at
   // 95 % of its half-range (0: none, the paper's): keeps tanh off its flat ends, where the
   // actor's gradient vanishes and a saturated action cannot come back (docs/policy.md).
