@@ -139,6 +139,21 @@ TEST(Policy, APolicyWithoutTheSplitsInItsActionMeshesWithThemAtZero) {
 
   // A policy of this build has all ten.
   const auto dir = testData::tempFolder("policyTenActions");
-  EXPECT_EQ(Policy::load(writeMember(dir, "ten", 3, 1)).layout().actionSize, policyActionSize);
+  const Policy ten = Policy::load(writeMember(dir, "ten", 3, 1));
+  EXPECT_EQ(ten.layout().actionSize, policyActionSize);
   EXPECT_EQ(policyActionSize, MeshingParameters::size);
+
+  // In an ensemble of both, the method's eight are the mean of the two members and the
+  // splits are the ten-action member's alone (the other knows nothing of them).
+  fs::create_directories(dir / "old");
+  for (const char* file : {"policy.xml", "policy.pt"})
+    fs::copy_file(findEtcFile(std::string("policy/seed1/") + file), dir / "old" / file,
+                  fs::copy_options::overwrite_existing);
+  const Policy mixed = Policy::load(writeEnsemble(dir, "mixed.xml", "old/policy.xml ten/policy.xml"));
+  const PolicyState s = old.state(blade, condition);
+  const PolicyAction x = old.act(s), y = ten.act(s), m = mixed.act(s);
+  for (int k = 0; k < MeshingParameters::methodSize; ++k) EXPECT_EQ(m[k], (x[k] + y[k]) / 2) << k;
+  EXPECT_EQ(m[8], y[8]);
+  EXPECT_EQ(m[9], y[9]);
+  EXPECT_NE(y[8], 0.0);
 }

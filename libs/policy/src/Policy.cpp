@@ -1,5 +1,7 @@
 #include "passageMesh/policy/Policy.hpp"
 
+#include <array>
+
 #include <cmath>
 #include <sstream>
 
@@ -280,15 +282,22 @@ PolicyAction Policy::act(const PolicyState& state) const {
   for (int k = 0; k < policyStateSize; ++k) s(0, k) = state[k];
   const torch::Tensor input = tensorOf(s);
   PolicyAction action{};
-  // What a policy without the splits in its action gives for them: the method's outer loop.
-  static const PolicyAction withoutSplits = policyAction(MeshingParameters{}, 1.0);
+  std::array<int, policyActionSize> members{};  // how many members give each action
   std::vector<Actor>& actors = members_->actors;  // forward() is not const in LibTorch
   for (Actor& actor : actors) {
     const PolicyBatch a = batchOf(actor.network->forward(input));
-    for (int k = 0; k < policyActionSize; ++k) action[k] += k < actor.layout.actionSize ? a(0, k) : withoutSplits[k];
+    for (int k = 0; k < actor.layout.actionSize; ++k) {
+      action[k] += a(0, k);
+      ++members[k];
+    }
   }
-  // A single actor's action exactly as its network gives it (x / 1 == x).
-  for (double& a : action) a /= static_cast<double>(actors.size());
+  // Each action is the mean over the members that have it: a member trained without the
+  // splits knows nothing of them, so it does not pull them to 0 in a mixed ensemble. Where
+  // no member has an action (a policy without the splits): the method's outer loop. A
+  // single actor's action is exactly as its network gives it (x / 1 == x).
+  static const PolicyAction withoutSplits = policyAction(MeshingParameters{}, 1.0);
+  for (int k = 0; k < policyActionSize; ++k)
+    action[k] = members[k] > 0 ? action[k] / members[k] : withoutSplits[k];
   return action;
 }
 
