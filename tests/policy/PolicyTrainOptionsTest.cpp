@@ -24,6 +24,7 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   o.wideNoiseSigma = 0.4;
   o.actorUpdatesFrom = 8000;
   o.actorTrainedActions = {9, 8};
+  o.wideNoiseActions = {5};
   const auto file = testData::writeTempFile("policyTrainDict", "dict.xml", policyTrainDictXml(o));
   const PolicyTrainOptions back = readPolicyTrainDict(file);
   EXPECT_EQ(policyTrainDictXml(back), policyTrainDictXml(o));
@@ -38,6 +39,7 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   EXPECT_EQ(back.wideNoiseSigma, 0.4);
   EXPECT_EQ(back.actorUpdatesFrom, 8000);
   EXPECT_EQ(back.actorTrainedActions, (std::vector<int>{9, 8}));
+  EXPECT_EQ(back.wideNoiseActions, (std::vector<int>{5}));
   EXPECT_NE(policyTrainDictXml(o).find("<actorTrainsOnly>splitOut splitIn</actorTrainsOnly>"), std::string::npos);
   EXPECT_EQ(readPolicyTrainDict(file.parent_path() / "missing.xml").episodes, PolicyTrainOptions{}.episodes);
 }

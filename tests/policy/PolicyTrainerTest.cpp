@@ -282,6 +282,33 @@ TEST(PolicyTrainer, AShareOfTheEpisodesExploresWithTheWideNoise) {
   EXPECT_EQ(allDiffer, 64);
   EXPECT_GE(differ, 16);  // binomial(64, 0.5): 32 +- 4
   EXPECT_LE(differ, 48);
+
+  // With wideNoiseActions only the named actions are widened; the others keep the
+  // schedule's sigma (0 here), so they are the noise-free run's actions exactly.
+  auto actionsOf = [&](const std::vector<int>& widened) {
+    PolicyTrainOptions run = o;
+    run.wideNoiseShare = 1;
+    run.wideNoiseActions = widened;
+    PolicyTrainer trainer(run, toy, rollouts);
+    EXPECT_TRUE(trainer.run(nullptr, {}));
+    PolicyBatch s, a;
+    Eigen::VectorXd q;
+    trainer.buffer().exportEpisodes(s, a, q);
+    return a;
+  };
+  PolicyTrainOptions noiseFree = o;
+  PolicyTrainer still(noiseFree, toy, rollouts);
+  ASSERT_TRUE(still.run(nullptr, {}));
+  PolicyBatch s, quietActions;
+  Eigen::VectorXd q;
+  still.buffer().exportEpisodes(s, quietActions, q);
+  const PolicyBatch one = actionsOf({1});
+  ASSERT_EQ(one.rows(), 64);
+  for (Eigen::Index k = 0; k < one.cols(); ++k) {
+    const double change = (one.col(k) - quietActions.col(k)).cwiseAbs().maxCoeff();
+    if (k == 1) EXPECT_GT(change, 0.1);
+    else EXPECT_EQ(change, 0.0) << "action " << k;
+  }
 }
 
 // -startFrom: another run's checkpoint (other seed, other settings) carries on under this

@@ -219,6 +219,8 @@ const std::vector<Key>& keys() {
        [](const O& o) { return formatExact(o.wideNoiseShare); }},
       {"wideNoiseSigma", readPositive("wideNoiseSigma", [](O& o) -> double& { return o.wideNoiseSigma; }, false),
        [](const O& o) { return formatExact(o.wideNoiseSigma); }},
+      {"wideNoiseActions", readActionNames("wideNoiseActions", &O::wideNoiseActions),
+       [](const O& o) { return actionNamesText(o.wideNoiseActions); }},
       {"bufferCapacity", readInteger("bufferCapacity", &O::bufferCapacity, 1), [](const O& o) { return std::to_string(o.bufferCapacity); }},
       {"validationEvery", readInteger("validationEvery", &O::validationEvery, 1), [](const O& o) { return std::to_string(o.validationEvery); }},
       {"validationPassages", readInteger("validationPassages", &O::validationPassages, 0), [](const O& o) { return std::to_string(o.validationPassages); }},

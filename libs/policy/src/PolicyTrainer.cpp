@@ -213,12 +213,14 @@ void PolicyTrainer::runBatch() {
   PolicyBatch actions = learner_.act(statesOf(tasks, environment_.stateSize()));
   for (int i = 0; i < count; ++i) {
     std::mt19937_64 noise = episodeRandom(options_.seed, static_cast<std::uint64_t>(first + i), noiseStream);
-    double sigma = options_.noiseSigma(first + i);
+    const double sigma = options_.noiseSigma(first + i);
     // (drawn only when asked for, so that runs without wide episodes keep their noise)
-    if (options_.wideNoiseShare > 0 && uniform01(noise) < options_.wideNoiseShare)
-      sigma = options_.wideNoiseSigma;
-    for (int k = 0; k < actions.cols(); ++k)
-      actions(i, k) = std::clamp(actions(i, k) + sigma * standardNormal(noise), -1.0, 1.0);
+    const bool wide = options_.wideNoiseShare > 0 && uniform01(noise) < options_.wideNoiseShare;
+    const auto& widened = options_.wideNoiseActions;
+    for (int k = 0; k < actions.cols(); ++k) {
+      const bool widen = wide && (widened.empty() || std::find(widened.begin(), widened.end(), k) != widened.end());
+      actions(i, k) = std::clamp(actions(i, k) + (widen ? options_.wideNoiseSigma : sigma) * standardNormal(noise), -1.0, 1.0);
+    }
   }
   const std::vector<double> rewards =
       rollouts_.rewards(tasks, actions, {options_.seed, static_cast<std::uint64_t>(first)});

@@ -56,6 +56,9 @@ struct PolicyTrainOptions {
   // the paper's; docs/policy.md).
   double wideNoiseShare = 0;
   double wideNoiseSigma = 0.5;
+  // The actions a wide episode widens (indices; the dictionary names them), the others
+  // keeping the schedule's sigma; empty: all of them.
+  std::vector<int> wideNoiseActions;
   long bufferCapacity = 1000000;  // replay buffer episodes (the newest kept)
   long validationEvery = 5000;    // episodes between validations (noise-free policy)
   int validationPassages = 50;    // fixed sampler passages of the validation set
