@@ -193,3 +193,32 @@ TEST(PolicyTrainOptions, TheShippedTrainingDictionaryReadsAndStartsAtItsStartFil
             readMeshDict(tutorial / "system" / "actorStartMeshDict.xml", 1.0).toArray());
   EXPECT_NE(o.actorStartParameters.toArray(), MeshingParameters::defaults(1.0).toArray());
 }
+
+// The dictionaries that trained the shipped ensemble's members (etc/policy/*/) still read,
+// with the settings their README names.
+TEST(PolicyTrainOptions, TheShippedMembersTrainingDictionariesRead) {
+  const std::filesystem::path policies = std::filesystem::path(PASSAGEMESH_SOURCE_DIR) / "etc" / "policy";
+  const PolicyTrainOptions seed3 = readPolicyTrainDict(policies / "seed3" / "policyTrainDict.xml");
+  EXPECT_EQ(seed3.seed, 3u);
+  EXPECT_TRUE(seed3.actorTrainedActions.empty());
+  const PolicyTrainOptions a = readPolicyTrainDict(policies / "seed3splits" / "policyTrainDict-A.xml");
+  const PolicyTrainOptions b = readPolicyTrainDict(policies / "seed3splits" / "policyTrainDict-B.xml");
+  const std::vector<int> splits{8, 9};
+  EXPECT_EQ(a.actorTrainedActions, splits);
+  EXPECT_EQ(a.actorUpdatesFrom, 10000);
+  EXPECT_EQ(a.wideNoiseShare, 0.0);
+  EXPECT_EQ(a.episodes, 24416);
+  EXPECT_EQ(b.actorTrainedActions, splits);
+  EXPECT_EQ(b.wideNoiseActions, splits);
+  EXPECT_EQ(b.wideNoiseShare, 0.3);
+  EXPECT_EQ(b.episodes, 42016);
+  // B continues A's run: everything that decides the weights is A's but the wide noise.
+  auto withoutWideNoise = [](PolicyTrainOptions o) {
+    o.wideNoiseShare = 0;
+    o.wideNoiseSigma = PolicyTrainOptions{}.wideNoiseSigma;
+    o.wideNoiseActions.clear();
+    return trajectorySettings(o);
+  };
+  EXPECT_EQ(withoutWideNoise(a), withoutWideNoise(b));
+  EXPECT_EQ(seed3.seed, a.seed);
+}
