@@ -1,7 +1,6 @@
 #include "passageMesh/policy/Policy.hpp"
 
 #include <array>
-
 #include <cmath>
 #include <sstream>
 
