@@ -17,6 +17,7 @@
 #include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/core/InputError.hpp"
 #include "passageMesh/core/InterruptFlag.hpp"
+#include "passageMesh/core/JoinedWords.hpp"
 #include "passageMesh/passage/PassageCase.hpp"
 #include "passageMesh/policy/DrlOptimizer.hpp"
 #include "passageMesh/workflow/MeshingOptimization.hpp"
@@ -28,11 +29,7 @@ namespace po = boost::program_options;
 
 namespace {
 
-std::string methodList() {
-  std::string list;
-  for (const auto& m : optimizerMethods()) list += (list.empty() ? "" : ", ") + m;
-  return list;
-}
+std::string methodList() { return joinedWords(optimizerMethods(), ", "); }
 
 // The optimiser's options from the command line; bad values are input errors, found
 // before the case is read or anything is written.

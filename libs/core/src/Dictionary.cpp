@@ -8,6 +8,7 @@
 
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/core/JoinedWords.hpp"
 
 namespace passageMesh {
 
@@ -22,12 +23,6 @@ std::string trim(const std::string& s) {
 
 bool contains(const std::vector<std::string>& list, const std::string& item) {
   return std::find(list.begin(), list.end(), item) != list.end();
-}
-
-std::string joined(const std::vector<std::string>& list) {
-  std::string out;
-  for (const auto& item : list) out += (out.empty() ? "" : ", ") + item;
-  return out;
 }
 
 }  // namespace
@@ -82,7 +77,7 @@ void Dictionary::readChildren(const void* xmlElement,
                          "unknown section <" + key + "> in <" + rootName_ + ">" +
                              (allowedSections.empty()
                                   ? ""
-                                  : " (allowed: " + joined(allowedSections) + ")"));
+                                  : " (allowed: " + joinedWords(allowedSections, ", ") + ")"));
       if (hasSection(key)) throw InputError(source_, line, "section <" + key + "> given twice");
       Dictionary& sub = addSection(key);
       sub.line_ = line;
@@ -93,7 +88,7 @@ void Dictionary::readChildren(const void* xmlElement,
     if (allowedKeys && !contains(*allowedKeys, key))
       throw InputError(source_, line,
                        "unknown key <" + key + "> in <" + rootName_ + ">" +
-                           (allowedKeys->empty() ? "" : " (allowed: " + joined(*allowedKeys) + ")"));
+                           (allowedKeys->empty() ? "" : " (allowed: " + joinedWords(*allowedKeys, ", ") + ")"));
     if (has(key)) throw InputError(source_, line, "key <" + key + "> given twice");
     entries_.push_back({key, trim(child->GetText() ? child->GetText() : ""), line});
   }
@@ -167,7 +162,7 @@ void Dictionary::checkKeys(const std::vector<std::string>& allowedKeys) const {
     if (!contains(allowedKeys, e.key))
       throw InputError(source_, e.line,
                        "unknown key <" + e.key + "> in <" + rootName_ +
-                           "> (allowed: " + joined(allowedKeys) + ")");
+                           "> (allowed: " + joinedWords(allowedKeys, ", ") + ")");
 }
 
 void Dictionary::require(const std::vector<std::string>& requiredKeys) const {

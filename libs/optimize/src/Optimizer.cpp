@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "Methods.hpp"
+#include "passageMesh/core/JoinedWords.hpp"
 
 namespace passageMesh {
 
@@ -40,9 +41,8 @@ OptimizationResult optimize(const BoxProblem& problem, const BatchObjective& obj
   problem.check();
   const auto& methods = optimizerMethods();
   if (std::find(methods.begin(), methods.end(), options.method) == methods.end()) {
-    std::string known;
-    for (const auto& m : methods) known += (known.empty() ? "" : ", ") + m;
-    throw std::invalid_argument("optimize: unknown method '" + options.method + "' (known: " + known + ")");
+    throw std::invalid_argument("optimize: unknown method '" + options.method + "' (known: " + joinedWords(methods, ", ") +
+                                ")");
   }
   if (options.budget < 1) throw std::invalid_argument("optimize: the budget must be at least 1 evaluation");
   if (!(options.patternSearchShare >= 0 && options.patternSearchShare <= 1))

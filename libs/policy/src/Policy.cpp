@@ -8,6 +8,7 @@
 #include "passageMesh/core/Dictionary.hpp"
 #include "passageMesh/core/EtcFiles.hpp"
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/core/JoinedWords.hpp"
 #include "passageMesh/policy/PolicyNetworks.hpp"
 #include "TorchTensors.hpp"
 
@@ -50,8 +51,9 @@ std::string scaleText(const PolicyStateScaling& scaling) {
   return text;
 }
 
+// Numbers to 17 significant digits, so that they read back bit for bit.
 template <typename Container>
-std::string joined(const Container& values) {
+std::string numbersText(const Container& values) {
   std::ostringstream s;
   s.precision(17);
   bool first = true;
@@ -116,13 +118,13 @@ void writePolicyFiles(const std::filesystem::path& xmlFile, const ActorCritic& l
   d.set("leakySlope", layout.leakySlope);
   d.set("layers", "layers.N.weight and layers.N.bias for N = 0, 2, 4, ...: Linear; odd N: LeakyReLU; "
                   "tanh on the output");
-  d.set("stateNames", joined(policyStateNames()));
-  d.set("stateLower", joined(scaling.lower));
-  d.set("stateUpper", joined(scaling.upper));
+  d.set("stateNames", joinedWords(policyStateNames(), " "));
+  d.set("stateLower", numbersText(scaling.lower));
+  d.set("stateUpper", numbersText(scaling.upper));
   d.set("stateScale", scaleText(scaling));
-  d.set("actionNames", joined(description.actionNames));
-  d.set("actionLower", joined(description.actionLower));
-  d.set("actionUpper", joined(description.actionUpper));
+  d.set("actionNames", joinedWords(description.actionNames, " "));
+  d.set("actionLower", numbersText(description.actionLower));
+  d.set("actionUpper", numbersText(description.actionUpper));
   d.set("trainedEpisodes", std::to_string(provenance.episodes));
   d.set("validationMeanReward", provenance.validationMeanReward);
   d.set("command", provenance.command);
@@ -200,11 +202,11 @@ Policy::Actor Policy::Actor::load(const Dictionary& d, const std::filesystem::pa
   if (!format1) expectText(d, "format", policyFormat);
   // The action: every meshing parameter, or the method's eight (a policy trained before
   // the splits were parameters; its meshes have them at 0).
-  const int actionSize = d.text("actionNames") == joined(PolicyDescription(MeshingParameters::methodSize).actionNames)
+  const int actionSize = d.text("actionNames") == joinedWords(PolicyDescription(MeshingParameters::methodSize).actionNames, " ")
                              ? MeshingParameters::methodSize
                              : policyActionSize;
   const PolicyDescription description(actionSize);
-  expectText(d, "stateNames", joined(policyStateNames()));
+  expectText(d, "stateNames", joinedWords(policyStateNames(), " "));
   Actor a;
   // This build's ranges; every value linear (format 1) until <stateScale> says otherwise.
   a.scaling = policyStateScaling(BladeParameterRange::readDefault(), EdgeRadiusScale::linear);
@@ -226,7 +228,7 @@ Policy::Actor Policy::Actor::load(const Dictionary& d, const std::filesystem::pa
         throw InputError(d.source(), d.line("stateScale"), "<stateScale> says log for " + policyStateNames()[k] +
                                                                ", whose lower bound is not positive");
   }
-  expectText(d, "actionNames", joined(description.actionNames));
+  expectText(d, "actionNames", joinedWords(description.actionNames, " "));
   expectNumbers(d, "stateLower", a.scaling.lower.data(), policyStateSize);
   expectNumbers(d, "stateUpper", a.scaling.upper.data(), policyStateSize);
   expectNumbers(d, "actionLower", description.actionLower.data(), actionSize);

@@ -10,6 +10,7 @@
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/Dictionary.hpp"
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/core/JoinedWords.hpp"
 #include "passageMesh/passage/MeshingParameters.hpp"
 #include "passageMesh/policy/PolicyScaling.hpp"
 
@@ -153,10 +154,8 @@ std::function<void(const Dictionary&, PolicyTrainOptions&)> readActionNames(cons
       const auto found = std::find(names.begin(), names.end(), word);
       const int index = static_cast<int>(found - names.begin());
       if (found == names.end() || std::find(indices.begin(), indices.end(), index) != indices.end()) {
-        std::string known;
-        for (const auto& n : names) known += (known.empty() ? "" : " ") + n;
         throw InputError(d.source(), d.line(name), "<" + std::string(name) + "> names meshing parameters, each once (" +
-                                                       known + "); got '" + word + "'");
+                                                       joinedWords(names, " ") + "); got '" + word + "'");
       }
       indices.push_back(index);
     }
@@ -165,9 +164,9 @@ std::function<void(const Dictionary&, PolicyTrainOptions&)> readActionNames(cons
 }
 
 std::string actionNamesText(const std::vector<int>& indices) {
-  std::string text;
-  for (int k : indices) text += (text.empty() ? "" : " ") + MeshingParameters::names()[static_cast<std::size_t>(k)];
-  return text;
+  std::vector<std::string> words;
+  for (int k : indices) words.push_back(MeshingParameters::names()[static_cast<std::size_t>(k)]);
+  return joinedWords(words, " ");
 }
 
 const std::vector<Key>& keys() {

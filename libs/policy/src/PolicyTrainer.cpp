@@ -106,7 +106,7 @@ PolicyTrainer::PolicyTrainer(const PolicyTrainOptions& options, const PolicyEnvi
       minibatchRandom_(episodeRandom(options.seed, 0, minibatchStream)),
       bestValidation_(-std::numeric_limits<double>::infinity()),
       start_(std::chrono::steady_clock::now()) {
-  if (!options_.actorTrainedActions.empty()) learner_.trainActorOutputsOnly(options_.actorTrainedActions);
+  learner_.trainActorOutputsOnly(options_.actorTrainedActions);  // empty: every weight learns
   for (int i = 0; i < options_.validationPassages; ++i)
     validationTasks_.push_back(environment_.draw(options_.validationSeed, static_cast<std::uint64_t>(i)));
 }
