@@ -119,7 +119,7 @@ int main(int argc, char* argv[]) {
     std::printf("criticDiagnosis: %s at episode %ld\n", caseDir.c_str(), trainer.episode());
     std::vector<EpisodeTask> tasks;
     for (int i = 0; i < std::stoi(argv[3]); ++i)
-      tasks.push_back(environment.draw(std::stoull(argv[2]), static_cast<std::uint64_t>(i)));
+      tasks.push_back(environment.draw(std::stoull(argv[2]), static_cast<std::uint64_t>(i), EpisodePurpose::validation));
     if (mode == "slices")
       slices(trainer.learner(), tasks, environment.stateSize(), std::stod(argv[5]), std::stoi(argv[6]), argv[7]);
     else

@@ -79,7 +79,7 @@ int main(int argc, char* argv[]) {
     constexpr double atBound = 0.98;  // scaled units; tanh's slope there is under 4 %
     std::vector<int> atLower(policyActionSize, 0), atUpper(policyActionSize, 0);
     for (int i = 0; i < count; ++i) {
-      const EpisodeTask task = environment.draw(seed, static_cast<std::uint64_t>(i));
+      const EpisodeTask task = environment.draw(seed, static_cast<std::uint64_t>(i), EpisodePurpose::validation);
       std::vector<double> action = environment.defaultAction();
       if (policy) {
         PolicyState s;

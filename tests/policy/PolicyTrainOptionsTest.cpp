@@ -25,6 +25,7 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   o.actorUpdatesFrom = 8000;
   o.actorTrainedActions = {9, 8};
   o.wideNoiseActions = {5};
+  o.trainingMeshes = TrainingMeshes::asAsked;
   const auto file = testData::writeTempFile("policyTrainDict", "dict.xml", policyTrainDictXml(o));
   const PolicyTrainOptions back = readPolicyTrainDict(file);
   EXPECT_EQ(policyTrainDictXml(back), policyTrainDictXml(o));
@@ -40,6 +41,7 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   EXPECT_EQ(back.actorUpdatesFrom, 8000);
   EXPECT_EQ(back.actorTrainedActions, (std::vector<int>{9, 8}));
   EXPECT_EQ(back.wideNoiseActions, (std::vector<int>{5}));
+  EXPECT_EQ(back.trainingMeshes, TrainingMeshes::asAsked);
   EXPECT_NE(policyTrainDictXml(o).find("<actorTrainsOnly>splitOut splitIn</actorTrainsOnly>"), std::string::npos);
   EXPECT_EQ(readPolicyTrainDict(file.parent_path() / "missing.xml").episodes, PolicyTrainOptions{}.episodes);
 }
@@ -101,6 +103,8 @@ TEST(PolicyTrainOptions, EveryEnumeratedSettingReadsBackFromItsWord) {
   for (const EdgeRadiusDraw v : {EdgeRadiusDraw::uniform, EdgeRadiusDraw::halfLogUniform})
     EXPECT_EQ(edgeRadiusDrawNamed(nameOf(v)), v);
   for (const ActorStart v : {ActorStart::random, ActorStart::defaults, ActorStart::meshDict}) EXPECT_EQ(actorStartNamed(nameOf(v)), v);
+  for (const TrainingMeshes v : {TrainingMeshes::asPolicyMesh, TrainingMeshes::asAsked})
+    EXPECT_EQ(trainingMeshesNamed(nameOf(v)), v);
   EXPECT_EQ(nameOf(CriticModel::validityAndQuality), "validityAndQuality");
   try {
     edgeRadiusDrawNamed("Uniform");  // words are case-sensitive, as in the dictionary

@@ -189,7 +189,7 @@ TEST(PolicyTrainer, TheValidationScoresTheActionsOfOneStateForwardPasses) {
     const Policy policy = Policy::load(dir / "policy.xml");
     double sum = 0;
     for (int i = 0; i < o.validationPassages; ++i) {
-      const EpisodeTask task = toy.draw(o.validationSeed, static_cast<std::uint64_t>(i));
+      const EpisodeTask task = toy.draw(o.validationSeed, static_cast<std::uint64_t>(i), EpisodePurpose::validation);
       PolicyState state;
       std::copy(task.state.begin(), task.state.end(), state.begin());
       const PolicyAction action = policy.act(state);
@@ -402,7 +402,7 @@ TEST(PolicyTrainer, TheActorStartsAsATrainedPolicysWithTheSplitsItLacksAtZero) {
   PolicyTrainer trainer(smallRun(32), passages, rollouts);
   trainer.startActorFrom(eight, passages.stateScaling());
   for (std::uint64_t i = 0; i < 3; ++i) {
-    const EpisodeTask task = passages.draw(20261202, i);
+    const EpisodeTask task = passages.draw(20261202, i, EpisodePurpose::validation);
     PolicyState s;
     std::copy(task.state.begin(), task.state.end(), s.begin());
     const PolicyAction expected = eight.act(s);

@@ -16,7 +16,7 @@ class FixedStateEnvironment final : public PolicyEnvironment {
       : stateSize_(stateSize), start_(std::move(start)) {}
   int stateSize() const override { return stateSize_; }
   int actionSize() const override { return static_cast<int>(start_.size()); }
-  EpisodeTask draw(std::uint64_t, std::uint64_t) const override {
+  EpisodeTask draw(std::uint64_t, std::uint64_t, EpisodePurpose) const override {
     return EpisodeTask{std::vector<double>(static_cast<std::size_t>(stateSize_), 0.0), nullptr};
   }
   std::vector<double> defaultAction() const override { return start_; }

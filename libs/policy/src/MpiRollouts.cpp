@@ -11,12 +11,14 @@ namespace passageMesh {
 
 namespace {
 
-// The header rank 0 broadcasts before each batch: command, seed, first episode, count, step
-// (EpisodeRange).
+// The header rank 0 broadcasts before each batch: command, seed, first episode, count, step,
+// purpose (EpisodeRange).
 enum Command : std::uint64_t { stopCommand = 0, evaluateCommand = 1 };
-using Header = std::array<std::uint64_t, 5>;
+using Header = std::array<std::uint64_t, 6>;
 
-void broadcastHeader(Header& h) { MPI_Bcast(h.data(), 5, MPI_UINT64_T, 0, MPI_COMM_WORLD); }
+void broadcastHeader(Header& h) {
+  MPI_Bcast(h.data(), static_cast<int>(h.size()), MPI_UINT64_T, 0, MPI_COMM_WORLD);
+}
 
 // Every rank's part of one batch; the sum over ranks lands on rank 0.
 std::vector<double> evaluateBatch(const MpiSession& session, const PolicyEnvironment& environment,
@@ -27,9 +29,10 @@ std::vector<double> evaluateBatch(const MpiSession& session, const PolicyEnviron
   MPI_Bcast(actions.data(), static_cast<int>(actions.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
   if (tasks.empty()) {
     tasks.resize(static_cast<std::size_t>(count));
-    const EpisodeRange range{h[1], h[2], h[4]};
+    const EpisodeRange range{h[1], h[2], h[4], static_cast<EpisodePurpose>(h[5])};
     for (int i = session.rank(); i < count; i += session.size())
-      tasks[static_cast<std::size_t>(i)] = environment.draw(range.seed, range.episode(static_cast<std::size_t>(i)));
+      tasks[static_cast<std::size_t>(i)] =
+          environment.draw(range.seed, range.episode(static_cast<std::size_t>(i)), range.purpose);
   }
   std::vector<double> mine, all(static_cast<std::size_t>(count), 0.0);
   try {
@@ -60,13 +63,14 @@ MpiRollouts::MpiRollouts(const MpiSession& session, const PolicyEnvironment& env
     : session_(session), environment_(environment), threads_(threads) {}
 
 MpiRollouts::~MpiRollouts() {
-  Header h{stopCommand, 0, 0, 0, 0};
+  Header h{stopCommand, 0, 0, 0, 0, 0};
   broadcastHeader(h);
 }
 
 std::vector<double> MpiRollouts::rewards(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
                                          const EpisodeRange& range) {
-  Header h{evaluateCommand, range.seed, range.first, tasks.size(), range.step};
+  Header h{evaluateCommand, range.seed, range.first, tasks.size(), range.step,
+           static_cast<std::uint64_t>(range.purpose)};
   broadcastHeader(h);
   PolicyBatch copy = actions;
   return evaluateBatch(session_, environment_, threads_, h, tasks, copy);

@@ -51,10 +51,11 @@ double standardNormal(std::mt19937_64& rng) {
 }
 
 PassageEnvironment::PassageEnvironment(BladeParameterRange range, EdgeRadiusDraw edgeRadii,
-                                       PolicyStateScaling scaling)
-    : range_(std::move(range)), edgeRadii_(edgeRadii), scaling_(scaling) {}
-PassageEnvironment::PassageEnvironment(EdgeRadiusDraw edgeRadii, PolicyStateScaling scaling)
-    : PassageEnvironment(BladeParameterRange::readDefault(), edgeRadii, scaling) {}
+                                       PolicyStateScaling scaling, TrainingMeshes trainingMeshes)
+    : range_(std::move(range)), edgeRadii_(edgeRadii), scaling_(scaling), trainingMeshes_(trainingMeshes) {}
+PassageEnvironment::PassageEnvironment(EdgeRadiusDraw edgeRadii, PolicyStateScaling scaling,
+                                       TrainingMeshes trainingMeshes)
+    : PassageEnvironment(BladeParameterRange::readDefault(), edgeRadii, scaling, trainingMeshes) {}
 PassageEnvironment::PassageEnvironment()
     : PassageEnvironment(EdgeRadiusDraw::halfLogUniform,
                          policyStateScaling(BladeParameterRange::readDefault())) {}
@@ -67,7 +68,7 @@ std::vector<double> PassageEnvironment::defaultAction() const {
   return {a.begin(), a.end()};
 }
 
-EpisodeTask PassageEnvironment::draw(std::uint64_t seed, std::uint64_t episode) const {
+EpisodeTask PassageEnvironment::draw(std::uint64_t seed, std::uint64_t episode, EpisodePurpose purpose) const {
   std::mt19937_64 rng = episodeRandom(seed, episode, 0);
   BladeSampler sampler(range_, rng(), edgeRadii_);
   const BladeParameters blade = sampler.next();
@@ -77,10 +78,16 @@ EpisodeTask PassageEnvironment::draw(std::uint64_t seed, std::uint64_t episode) 
       PassageCase{BladeShape(blade), condition, MeshingParameters::defaults(blade.chord)});
   EpisodeTask task;
   task.state.assign(state.begin(), state.end());
-  task.reward = [input](const std::vector<double>& action) {
+  HohMeshOptions mesher;  // policyMesh's
+  if (purpose == EpisodePurpose::training && trainingMeshes_ == TrainingMeshes::asAsked) {
+    mesher.outerLoopRoom = 0;
+    mesher.clusteringMoves = false;
+    mesher.splitMoves = false;
+  }
+  task.reward = [input, mesher](const std::vector<double>& action) {
     PolicyAction a{};
     for (int k = 0; k < policyActionSize; ++k) a[k] = action.at(k);
-    return meshQualityOf(*input, meshingParametersOf(a, input->blade.parameters().chord));
+    return meshQualityOf(*input, meshingParametersOf(a, input->blade.parameters().chord), mesher);
   };
   return task;
 }

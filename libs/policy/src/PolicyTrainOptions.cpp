@@ -36,7 +36,8 @@ PassageEnvironment PolicyTrainOptions::passageEnvironment() const {
   return PassageEnvironment(edgeRadii,
                             policyStateScaling(BladeParameterRange::readDefault(),
                                                edgeRadii == EdgeRadiusDraw::halfLogUniform ? EdgeRadiusScale::logarithmic
-                                                                                           : EdgeRadiusScale::linear));
+                                                                                           : EdgeRadiusScale::linear),
+                            trainingMeshes);
 }
 
 std::vector<double> PolicyTrainOptions::actorStartAction(const PolicyEnvironment& environment) const {
@@ -77,6 +78,8 @@ struct Words {
 const Words<ActorStart> actorStartWords{"actorStart", {{"random", ActorStart::random}, {"defaults", ActorStart::defaults}, {"meshDict", ActorStart::meshDict}}};
 const Words<EdgeRadiusDraw> edgeRadiusWords{
     "edgeRadii", {{"halfLogUniform", EdgeRadiusDraw::halfLogUniform}, {"uniform", EdgeRadiusDraw::uniform}}};
+const Words<TrainingMeshes> trainingMeshesWords{
+    "trainingMeshes", {{"asPolicyMesh", TrainingMeshes::asPolicyMesh}, {"asAsked", TrainingMeshes::asAsked}}};
 const Words<CriticModel> criticModelWords{
     "criticModel",
     {{"reward", CriticModel::reward},
@@ -88,9 +91,11 @@ const Words<CriticModel> criticModelWords{
 ActorStart actorStartNamed(const std::string& word) { return actorStartWords.named(word); }
 EdgeRadiusDraw edgeRadiusDrawNamed(const std::string& word) { return edgeRadiusWords.named(word); }
 CriticModel criticModelNamed(const std::string& word) { return criticModelWords.named(word); }
+TrainingMeshes trainingMeshesNamed(const std::string& word) { return trainingMeshesWords.named(word); }
 std::string nameOf(ActorStart value) { return actorStartWords.nameOf(value); }
 std::string nameOf(EdgeRadiusDraw value) { return edgeRadiusWords.nameOf(value); }
 std::string nameOf(CriticModel value) { return criticModelWords.nameOf(value); }
+std::string nameOf(TrainingMeshes value) { return trainingMeshesWords.nameOf(value); }
 
 namespace {
 
@@ -230,6 +235,8 @@ const std::vector<Key>& keys() {
       {"actorStartMeshDict", [](const Dictionary& d, O& o) { o.actorStartMeshDict = d.text("actorStartMeshDict"); },
        [](const O& o) { return o.actorStartMeshDict.string(); }},
       {"edgeRadii", readChoice(edgeRadiusWords, &O::edgeRadii), [](const O& o) { return nameOf(o.edgeRadii); }},
+      {"trainingMeshes", readChoice(trainingMeshesWords, &O::trainingMeshes),
+       [](const O& o) { return nameOf(o.trainingMeshes); }},
       {"criticModel", readChoice(criticModelWords, &O::criticModel), [](const O& o) { return nameOf(o.criticModel); }},
       {"validityBarrier", readPositive("validityBarrier", [](O& o) -> double& { return o.validityBarrier; }, true),
        [](const O& o) { return formatExact(o.validityBarrier); }},

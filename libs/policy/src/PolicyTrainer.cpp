@@ -108,7 +108,8 @@ PolicyTrainer::PolicyTrainer(const PolicyTrainOptions& options, const PolicyEnvi
       start_(std::chrono::steady_clock::now()) {
   learner_.trainActorOutputsOnly(options_.actorTrainedActions);  // empty: every weight learns
   for (int i = 0; i < options_.validationPassages; ++i)
-    validationTasks_.push_back(environment_.draw(options_.validationSeed, static_cast<std::uint64_t>(i)));
+    validationTasks_.push_back(
+        environment_.draw(options_.validationSeed, static_cast<std::uint64_t>(i), EpisodePurpose::validation));
 }
 
 double PolicyTrainer::secondsTrained() const {
@@ -180,7 +181,7 @@ Imitation PolicyTrainer::imitationBatch() {
 
 void PolicyTrainer::search(std::uint64_t index) {
   const EpisodeRange range{searchPassageSeed(options_.seed), index, 0};
-  const EpisodeTask task = environment_.draw(range.seed, index);
+  const EpisodeTask task = environment_.draw(range.seed, index, EpisodePurpose::training);
   const int m = environment_.actionSize();
   const PolicyBatch start = learner_.act(statesOf({task}, environment_.stateSize()));
   const BatchObjective objective = [&](const std::vector<Eigen::VectorXd>& points) {
@@ -209,7 +210,8 @@ void PolicyTrainer::runBatch() {
   const int count = static_cast<int>(std::min<long>(options_.batchEpisodes, options_.episodes - first));
   std::vector<EpisodeTask> tasks(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i)
-    tasks[static_cast<std::size_t>(i)] = environment_.draw(options_.seed, static_cast<std::uint64_t>(first + i));
+    tasks[static_cast<std::size_t>(i)] =
+        environment_.draw(options_.seed, static_cast<std::uint64_t>(first + i), EpisodePurpose::training);
   PolicyBatch actions = learner_.act(statesOf(tasks, environment_.stateSize()));
   for (int i = 0; i < count; ++i) {
     std::mt19937_64 noise = episodeRandom(options_.seed, static_cast<std::uint64_t>(first + i), noiseStream);
@@ -236,7 +238,7 @@ ValidationRecord PolicyTrainer::validateAction(const std::vector<double>& action
   PolicyBatch actions(n, environment_.actionSize());
   for (int i = 0; i < n; ++i)
     actions.row(i) = Eigen::Map<const Eigen::RowVectorXd>(action.data(), environment_.actionSize());
-  return validationRecord(0, rollouts_.rewards(validationTasks_, actions, {options_.validationSeed, 0}));
+  return validationRecord(0, rollouts_.rewards(validationTasks_, actions, {options_.validationSeed, 0, 1, EpisodePurpose::validation}));
 }
 
 ValidationRecord PolicyTrainer::validateCurrentPolicy() const {
@@ -246,7 +248,7 @@ ValidationRecord PolicyTrainer::validateCurrentPolicy() const {
   const PolicyBatch states = statesOf(validationTasks_, environment_.stateSize());
   PolicyBatch actions(states.rows(), environment_.actionSize());
   for (Eigen::Index i = 0; i < states.rows(); ++i) actions.row(i) = learner_.act(states.row(i));
-  return validationRecord(episode_, rollouts_.rewards(validationTasks_, actions, {options_.validationSeed, 0}));
+  return validationRecord(episode_, rollouts_.rewards(validationTasks_, actions, {options_.validationSeed, 0, 1, EpisodePurpose::validation}));
 }
 
 void PolicyTrainer::validate() {

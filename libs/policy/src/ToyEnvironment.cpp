@@ -31,7 +31,7 @@ std::vector<double> ToyEnvironment::optimum(const std::vector<double>& state) co
   return x;
 }
 
-EpisodeTask ToyEnvironment::draw(std::uint64_t seed, std::uint64_t episode) const {
+EpisodeTask ToyEnvironment::draw(std::uint64_t seed, std::uint64_t episode, EpisodePurpose) const {
   std::mt19937_64 rng = episodeRandom(seed, episode, 0);
   EpisodeTask task;
   task.state.resize(static_cast<std::size_t>(stateSize_));
@@ -53,7 +53,7 @@ double ToyEnvironment::actionError(const ActorCritic& learner, std::uint64_t see
   std::vector<EpisodeTask> tasks;
   std::vector<std::vector<double>> optima;
   for (int i = 0; i < count; ++i) {
-    tasks.push_back(draw(seed, static_cast<std::uint64_t>(i)));
+    tasks.push_back(draw(seed, static_cast<std::uint64_t>(i), EpisodePurpose::validation));
     optima.push_back(optimum(tasks.back().state));
   }
   const PolicyBatch actions = learner.act(statesOf(tasks, stateSize_));

@@ -8,8 +8,9 @@
 
 namespace passageMesh {
 
-double meshQualityOf(const PassageCase& input, const MeshingParameters& parameters) {
-  const HohMesh hoh = buildHohMesh(input.blade, input.condition, parameters);
+double meshQualityOf(const PassageCase& input, const MeshingParameters& parameters,
+                     const HohMeshOptions& options) {
+  const HohMesh hoh = buildHohMesh(input.blade, input.condition, parameters, options);
   if (!hoh.valid) return invalidMeshQuality;
   // One workspace per thread: after the first mesh of a size it allocates nothing more.
   thread_local MeshQualityWorkspace workspace;

@@ -15,6 +15,11 @@
 
 namespace passageMesh {
 
+// What an episode is drawn for: a training episode (or a search's) may be meshed otherwise
+// than the product meshes (PassageEnvironment's TrainingMeshes); validation and
+// evaluation always mesh as policyMesh does.
+enum class EpisodePurpose { training, validation };
+
 struct EpisodeTask {
   std::vector<double> state;  // in [-1, 1]
   // The reward of an action in [-1, 1]^actionSize; callable from any thread.
@@ -26,7 +31,7 @@ class PolicyEnvironment {
   virtual ~PolicyEnvironment() = default;
   virtual int stateSize() const = 0;
   virtual int actionSize() const = 0;
-  virtual EpisodeTask draw(std::uint64_t seed, std::uint64_t episode) const = 0;
+  virtual EpisodeTask draw(std::uint64_t seed, std::uint64_t episode, EpisodePurpose purpose) const = 0;
   // A known reasonable action for every state, where there is one (the actor may start
   // there); empty otherwise.
   virtual std::vector<double> defaultAction() const { return {}; }
@@ -49,6 +54,13 @@ std::mt19937_64 episodeRandom(std::uint64_t seed, std::uint64_t episode, std::ui
 // A standard normal variate from uniform01 (Box-Muller), the same on every platform.
 double standardNormal(std::mt19937_64& rng);
 
+// How a training episode's mesh is built: `asPolicyMesh`, as policyMesh builds it (where
+// the mesh as asked is invalid, buildHohMesh moves the parameters and scores the first
+// valid mesh); `asAsked`, with the action's parameters only (HohMeshOptions' parameter
+// moves off: such an episode scores -1, and costs one try instead of up to 24;
+// docs/policy.md "Training meshes").
+enum class TrainingMeshes { asPolicyMesh, asAsked };
+
 // Blade passages from the sampler (PassageSampler.hpp: a valid blade from the BSP box, a
 // condition from PassageConditionRange); the reward is the mesh quality Q of the HOH mesh
 // built with the action's meshing parameters (-1 for an invalid mesh).
@@ -58,15 +70,17 @@ double standardNormal(std::mt19937_64& rng);
 // `scaling` how the state is scaled (the policy's own, Policy::stateScaling()).
 class PassageEnvironment final : public PolicyEnvironment {
  public:
-  PassageEnvironment(BladeParameterRange range, EdgeRadiusDraw edgeRadii, PolicyStateScaling scaling);
+  PassageEnvironment(BladeParameterRange range, EdgeRadiusDraw edgeRadii, PolicyStateScaling scaling,
+                     TrainingMeshes trainingMeshes = TrainingMeshes::asPolicyMesh);
   // etc/bladeParameterRange.xml, half log-uniform edge radii, logarithmic radii in the state.
   PassageEnvironment();
   // etc/bladeParameterRange.xml with the given draw and scaling.
-  PassageEnvironment(EdgeRadiusDraw edgeRadii, PolicyStateScaling scaling);
+  PassageEnvironment(EdgeRadiusDraw edgeRadii, PolicyStateScaling scaling,
+                     TrainingMeshes trainingMeshes = TrainingMeshes::asPolicyMesh);
   const PolicyStateScaling& stateScaling() const { return scaling_; }
   int stateSize() const override;
   int actionSize() const override;
-  EpisodeTask draw(std::uint64_t seed, std::uint64_t episode) const override;
+  EpisodeTask draw(std::uint64_t seed, std::uint64_t episode, EpisodePurpose purpose) const override;
   // The action of etc/meshDictDefaults.xml (the same for every chord).
   std::vector<double> defaultAction() const override;
 
@@ -74,6 +88,7 @@ class PassageEnvironment final : public PolicyEnvironment {
   BladeParameterRange range_;
   EdgeRadiusDraw edgeRadii_;
   PolicyStateScaling scaling_;
+  TrainingMeshes trainingMeshes_;
 };
 
 }  // namespace passageMesh

@@ -77,6 +77,11 @@ struct PolicyTrainOptions {
   // apart) or uniform (uniform draws, linear in the state: the policies trained before
   // the twelfth session, 2026-12-04). docs/policy.md measures both.
   EdgeRadiusDraw edgeRadii = EdgeRadiusDraw::halfLogUniform;
+  // How the training episodes' (and searches') meshes are built: asPolicyMesh (the
+  // mesher's parameter moves where a mesh as asked is invalid, as policyMesh) or asAsked
+  // (no moves: -1 for such an episode, a fraction of the time). Validation meshes as
+  // policyMesh either way (PolicyEnvironment.hpp; docs/policy.md "Training meshes").
+  TrainingMeshes trainingMeshes = TrainingMeshes::asPolicyMesh;
   // What the critic predicts: reward (the paper's), validityAndQuality or
   // validityAndBoundedQuality (NetworkLayout.hpp; docs/policy.md measures them).
   CriticModel criticModel = CriticModel::reward;
@@ -111,9 +116,11 @@ struct PolicyTrainOptions {
 ActorStart actorStartNamed(const std::string& word);
 EdgeRadiusDraw edgeRadiusDrawNamed(const std::string& word);
 CriticModel criticModelNamed(const std::string& word);
+TrainingMeshes trainingMeshesNamed(const std::string& word);
 std::string nameOf(ActorStart value);
 std::string nameOf(EdgeRadiusDraw value);
 std::string nameOf(CriticModel value);
+std::string nameOf(TrainingMeshes value);
 
 // A missing file gives the defaults; a missing key keeps its default; an unknown key, a
 // malformed or out-of-range value is an InputError naming the file and the line.

@@ -12,9 +12,10 @@ namespace passageMesh {
 
 // Which episodes a batch's rows are: row i is episode first + i * step of stream `seed` (a
 // remote rank draws them again from that). step 0: every row is the same episode, as in a
-// search over one passage's actions.
+// search over one passage's actions. `purpose`: what the rows were drawn for.
 struct EpisodeRange {
   std::uint64_t seed = 0, first = 0, step = 1;
+  EpisodePurpose purpose = EpisodePurpose::training;
   std::uint64_t episode(std::size_t row) const { return first + row * step; }
 };
 

@@ -23,7 +23,7 @@ class ToyEnvironment final : public PolicyEnvironment {
                  double cliff = std::numeric_limits<double>::infinity());
   int stateSize() const override { return stateSize_; }
   int actionSize() const override { return actionSize_; }
-  EpisodeTask draw(std::uint64_t seed, std::uint64_t episode) const override;
+  EpisodeTask draw(std::uint64_t seed, std::uint64_t episode, EpisodePurpose purpose) const override;
   std::vector<double> optimum(const std::vector<double>& state) const;
   // The RMS distance of the noise-free actor's actions from the optimum (scaled units)
   // over `count` states of stream `seed`.
