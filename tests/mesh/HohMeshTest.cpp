@@ -180,9 +180,7 @@ TEST(HohMesh, SaysWhenAnInterfaceCutsTheBlade) {
   c = paperCondition(C);
   MeshingParameters m = MeshingParameters::defaults(C);
   m.betaIn = 0;
-  HohMeshOptions asked;  // no moved parameters (next tests)
-  asked.outerLoopRoom = 0;
-  asked.clusteringMoves = false;
+  const HohMeshOptions asked = HohMeshOptions{}.withoutParameterMoves();  // (next tests)
   hoh = buildHohMesh(blade, c, m, asked);
   EXPECT_FALSE(hoh.valid);
   EXPECT_NE(hoh.problem.find("the inlet interface (x = "), std::string::npos) << hoh.problem;
@@ -199,9 +197,7 @@ TEST(HohMesh, MovesTheOuterLoopAwayWhereItLeavesTooLittleRoom) {
   MeshingParameters m = MeshingParameters::defaults(C);
   m.betaIn = 0;  // the inlet interface through the leading edge
   m.nT = 200;
-  HohMeshOptions asked;
-  asked.outerLoopRoom = 0;
-  asked.clusteringMoves = false;
+  const HohMeshOptions asked = HohMeshOptions{}.withoutParameterMoves();
   const HohMesh cut = buildHohMesh(blade, c, m, asked);
   ASSERT_FALSE(cut.valid);
 

@@ -78,12 +78,8 @@ EpisodeTask PassageEnvironment::draw(std::uint64_t seed, std::uint64_t episode, 
       PassageCase{BladeShape(blade), condition, MeshingParameters::defaults(blade.chord)});
   EpisodeTask task;
   task.state.assign(state.begin(), state.end());
-  HohMeshOptions mesher;  // policyMesh's
-  if (purpose == EpisodePurpose::training && trainingMeshes_ == TrainingMeshes::asAsked) {
-    mesher.outerLoopRoom = 0;
-    mesher.clusteringMoves = false;
-    mesher.splitMoves = false;
-  }
+  const bool asAsked = purpose == EpisodePurpose::training && trainingMeshes_ == TrainingMeshes::asAsked;
+  const HohMeshOptions mesher = asAsked ? HohMeshOptions{}.withoutParameterMoves() : HohMeshOptions{};
   task.reward = [input, mesher](const std::vector<double>& action) {
     PolicyAction a{};
     for (int k = 0; k < policyActionSize; ++k) a[k] = action.at(k);

@@ -63,6 +63,11 @@ std::string firstDifference(const std::string& before, const PolicyTrainOptions&
   return recorded.empty() ? "" : "<" + recorded.begin()->first + "> is no longer a setting";
 }
 
+// The rows of the validation set (the batch the validation's rewards come from).
+EpisodeRange validationRange(const PolicyTrainOptions& options) {
+  return {options.validationSeed, 0, 1, EpisodePurpose::validation};
+}
+
 // The validation summary of one set of rewards.
 ValidationRecord validationRecord(long episode, const std::vector<double>& rewards) {
   const RewardSummary summary = summarizeRewards(rewards);
@@ -238,7 +243,7 @@ ValidationRecord PolicyTrainer::validateAction(const std::vector<double>& action
   PolicyBatch actions(n, environment_.actionSize());
   for (int i = 0; i < n; ++i)
     actions.row(i) = Eigen::Map<const Eigen::RowVectorXd>(action.data(), environment_.actionSize());
-  return validationRecord(0, rollouts_.rewards(validationTasks_, actions, {options_.validationSeed, 0, 1, EpisodePurpose::validation}));
+  return validationRecord(0, rollouts_.rewards(validationTasks_, actions, validationRange(options_)));
 }
 
 ValidationRecord PolicyTrainer::validateCurrentPolicy() const {
@@ -248,7 +253,7 @@ ValidationRecord PolicyTrainer::validateCurrentPolicy() const {
   const PolicyBatch states = statesOf(validationTasks_, environment_.stateSize());
   PolicyBatch actions(states.rows(), environment_.actionSize());
   for (Eigen::Index i = 0; i < states.rows(); ++i) actions.row(i) = learner_.act(states.row(i));
-  return validationRecord(episode_, rollouts_.rewards(validationTasks_, actions, {options_.validationSeed, 0, 1, EpisodePurpose::validation}));
+  return validationRecord(episode_, rollouts_.rewards(validationTasks_, actions, validationRange(options_)));
 }
 
 void PolicyTrainer::validate() {

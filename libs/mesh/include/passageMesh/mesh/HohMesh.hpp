@@ -76,6 +76,16 @@ struct HohMeshOptions {
   // halfway to the defaults', then to them: the method's outer loop.
   bool splitMoves = true;
   EllipticOptions elliptic;
+
+  // These options with every parameter move above off: the mesh of the parameters as
+  // asked, or invalid (the tries without orthogonality stay).
+  HohMeshOptions withoutParameterMoves() const {
+    HohMeshOptions asked = *this;
+    asked.outerLoopRoom = 0;
+    asked.clusteringMoves = false;
+    asked.splitMoves = false;
+    return asked;
+  }
 };
 
 struct HohMesh {
