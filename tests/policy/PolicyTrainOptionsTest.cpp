@@ -44,6 +44,12 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   EXPECT_EQ(back.trainingMeshes, TrainingMeshes::asAsked);
   EXPECT_NE(policyTrainDictXml(o).find("<actorTrainsOnly>splitOut splitIn</actorTrainsOnly>"), std::string::npos);
   EXPECT_EQ(readPolicyTrainDict(file.parent_path() / "missing.xml").episodes, PolicyTrainOptions{}.episodes);
+
+  PolicyTrainOptions overlapped;  // (not with searches: above)
+  overlapped.learnerSchedule = LearnerSchedule::duringNextRollouts;
+  const auto overlappedFile = testData::writeTempFile("policyTrainDict", "overlapped.xml", policyTrainDictXml(overlapped));
+  EXPECT_EQ(readPolicyTrainDict(overlappedFile).learnerSchedule, LearnerSchedule::duringNextRollouts);
+  EXPECT_EQ(o.learnerSchedule, LearnerSchedule::afterRollouts);  // the paper's order by default
 }
 
 TEST(PolicyTrainOptions, PaperNoiseSchedule) {
@@ -81,6 +87,12 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
   EXPECT_NE(bad("<imitationWeight>1</imitationWeight>").find("bad.xml:2: <imitationWeight> needs <searchEvery> above 0"),
             std::string::npos) << bad("<imitationWeight>1</imitationWeight>");
   EXPECT_EQ(bad("<searchEvery>64</searchEvery>\n<imitationWeight>1</imitationWeight>"), "accepted");
+  EXPECT_NE(bad("<searchEvery>64</searchEvery>\n<learnerSchedule>duringNextRollouts</learnerSchedule>")
+                .find("bad.xml:3: <learnerSchedule>duringNextRollouts</learnerSchedule> needs <searchEvery> 0"),
+            std::string::npos);
+  EXPECT_NE(bad("<learnerSchedule>overlapped</learnerSchedule>")
+                .find("<learnerSchedule> is 'afterRollouts' or 'duringNextRollouts', not 'overlapped'"),
+            std::string::npos);
   EXPECT_NE(bad("<searchBudget>1</searchBudget>").find("must be in [2,"), std::string::npos);
   EXPECT_NE(bad("<wideNoiseShare>1.5</wideNoiseShare>").find("bad.xml:2: <wideNoiseShare> is a share of the episodes"),
             std::string::npos) << bad("<wideNoiseShare>1.5</wideNoiseShare>");
@@ -105,6 +117,8 @@ TEST(PolicyTrainOptions, EveryEnumeratedSettingReadsBackFromItsWord) {
   for (const ActorStart v : {ActorStart::random, ActorStart::defaults, ActorStart::meshDict}) EXPECT_EQ(actorStartNamed(nameOf(v)), v);
   for (const TrainingMeshes v : {TrainingMeshes::asPolicyMesh, TrainingMeshes::asAsked})
     EXPECT_EQ(trainingMeshesNamed(nameOf(v)), v);
+  for (const LearnerSchedule v : {LearnerSchedule::afterRollouts, LearnerSchedule::duringNextRollouts})
+    EXPECT_EQ(learnerScheduleNamed(nameOf(v)), v);
   EXPECT_EQ(nameOf(CriticModel::validityAndQuality), "validityAndQuality");
   try {
     edgeRadiusDrawNamed("Uniform");  // words are case-sensitive, as in the dictionary

@@ -46,9 +46,11 @@ std::pair<PolicyBatch, Eigen::VectorXd> fingerprint(const ActorCritic& learner, 
 }  // namespace
 
 // Both critic models, on a toy with failures (-1) so that the validity network learns too;
-// and with searches and imitation (their demonstrations and counters are in the checkpoint).
+// with searches and imitation (their demonstrations and counters are in the checkpoint);
+// and with the learner beside the next batch's rollouts (the checkpoint holds a batch built
+// but not yet learnt).
 TEST(PolicyTrainer, ResumingFromACheckpointGivesTheSameWeightsBitForBit) {
-  for (const std::string critic : {"reward", "validityAndQuality", "searches"}) {
+  for (const std::string critic : {"reward", "validityAndQuality", "searches", "duringNextRollouts"}) {
     SCOPED_TRACE("criticModel " + critic);
     const ToyEnvironment toy(24, 8, 3, 0.05);
     PolicyTrainOptions run = smallRun(300);
@@ -56,6 +58,8 @@ TEST(PolicyTrainer, ResumingFromACheckpointGivesTheSameWeightsBitForBit) {
       run.searchEvery = 48;  // not a multiple of the batch: one search follows episode 48's batch
       run.searchBudget = 12;
       run.imitationWeight = 1;
+    } else if (critic == "duringNextRollouts") {
+      run.learnerSchedule = LearnerSchedule::duringNextRollouts;
     } else {
       run.criticModel = criticModelNamed(critic);
     }
@@ -153,19 +157,31 @@ TEST(PolicyTrainer, ACheckpointOfAnotherRunOrACorruptFileIsRefusedWithItsName) {
 
 TEST(PolicyTrainer, PassageTrainingGivesTheSameWeightsOnOneOrTwoThreads) {
   const PassageEnvironment passages;
-  PolicyTrainOptions o = smallRun(32);
+  PolicyTrainOptions o = smallRun(48);  // three batches: the learner starts in the second
   o.validationPassages = 4;
-  o.validationEvery = 32;
-  ThreadRollouts one(1), two(2);
-  PolicyTrainer a(o, passages, one), b(o, passages, two);
-  ASSERT_TRUE(a.run(nullptr, {}));
-  ASSERT_TRUE(b.run(nullptr, {}));
-  EXPECT_EQ(fingerprint(a.learner(), policyStateSize, policyActionSize),
-            fingerprint(b.learner(), policyStateSize, policyActionSize));
-  ASSERT_EQ(a.validationCurve().size(), 1u);
-  EXPECT_EQ(a.validationCurve()[0].meanReward, b.validationCurve()[0].meanReward);
-  std::vector<double> rewards = a.buffer().recentRewards(32);
-  for (double r : rewards) EXPECT_TRUE(r == -1.0 || (r >= 0.0 && r <= 1.0)) << r;
+  o.validationEvery = 48;
+  o.noiseStartSigma = 0.3;  // some valid meshes among them
+  std::vector<std::pair<PolicyBatch, Eigen::VectorXd>> weights;
+  for (const LearnerSchedule schedule : {LearnerSchedule::afterRollouts, LearnerSchedule::duringNextRollouts}) {
+    SCOPED_TRACE(nameOf(schedule));
+    o.learnerSchedule = schedule;
+    ThreadRollouts one(1), two(2);
+    PolicyTrainer a(o, passages, one), b(o, passages, two);
+    ASSERT_TRUE(a.run(nullptr, {}));
+    ASSERT_TRUE(b.run(nullptr, {}));
+    EXPECT_EQ(a.episode(), 48);
+    EXPECT_EQ(a.buffer().size(), 48);
+    weights.push_back(fingerprint(a.learner(), policyStateSize, policyActionSize));
+    EXPECT_EQ(weights.back(), fingerprint(b.learner(), policyStateSize, policyActionSize));
+    ASSERT_EQ(a.validationCurve().size(), 1u);
+    EXPECT_EQ(a.validationCurve()[0].meanReward, b.validationCurve()[0].meanReward);
+    std::vector<double> rewards = a.buffer().recentRewards(48);
+    for (double r : rewards) EXPECT_TRUE(r == -1.0 || (r >= 0.0 && r <= 1.0)) << r;
+    EXPECT_GT(std::count_if(rewards.begin(), rewards.end(), [](double r) { return r > 0; }), 0);
+  }
+  // The third batch's actions came from another actor (before the second batch's updates),
+  // so the two schedules train other weights.
+  EXPECT_NE(weights[0], weights[1]);
 }
 
 // The validation curve scores what policyMesh will do with the weights: one forward pass

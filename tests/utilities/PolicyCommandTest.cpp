@@ -109,6 +109,16 @@ TEST(PolicyTrainCommand, TwoMpiRanksGiveTheWeightsOfTwoThreads) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("2 MPI ranks"), std::string::npos) << r.out;
   EXPECT_EQ(readText(ranks / "policy" / "final.pt"), readText(threads / "policy" / "final.pt"));
+
+  // The learner beside the next batch's rollouts: on rank 0 it runs while the ranks mesh.
+  const std::string overlapped = "  <learnerSchedule>duringNextRollouts</learnerSchedule>\n";
+  const fs::path threadsOverlapped = trainingCase("policyTrainThreadsOverlapped", 64, overlapped);
+  ASSERT_EQ(runTool(policyTrain, threadsOverlapped).exitCode, 0);
+  const fs::path ranksOverlapped = trainingCase("policyTrainRanksOverlapped", 64, overlapped);
+  const RunResult o = runCommand("mpirun", "-np 2 '" + policyTrain + "' -case '" + ranksOverlapped.string() +
+                                               "' -parallel -threads 1", ranksOverlapped);
+  ASSERT_EQ(o.exitCode, 0) << o.err;
+  EXPECT_EQ(readText(ranksOverlapped / "policy" / "final.pt"), readText(threadsOverlapped / "policy" / "final.pt"));
 }
 
 TEST(PolicyMeshCommand, MeshesWithATrainedPolicyAndRefusesBadPolicyFiles) {

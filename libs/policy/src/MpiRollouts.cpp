@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdio>
+#include <exception>
 
 #include "passageMesh/core/ParallelFor.hpp"
 
@@ -20,10 +21,11 @@ void broadcastHeader(Header& h) {
   MPI_Bcast(h.data(), static_cast<int>(h.size()), MPI_UINT64_T, 0, MPI_COMM_WORLD);
 }
 
-// Every rank's part of one batch; the sum over ranks lands on rank 0.
+// Every rank's part of one batch; the sum over ranks lands on rank 0. On rank 0, `meanwhile`
+// (if any) runs on this thread while the rank's part is computed on others.
 std::vector<double> evaluateBatch(const MpiSession& session, const PolicyEnvironment& environment,
                                   int threads, const Header& h, std::vector<EpisodeTask> tasks,
-                                  PolicyBatch& actions) {
+                                  PolicyBatch& actions, const std::function<void()>& meanwhile = {}) {
   const int count = static_cast<int>(h[3]);
   actions.resize(count, environment.actionSize());
   MPI_Bcast(actions.data(), static_cast<int>(actions.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
@@ -35,15 +37,28 @@ std::vector<double> evaluateBatch(const MpiSession& session, const PolicyEnviron
           environment.draw(range.seed, range.episode(static_cast<std::size_t>(i)), range.purpose);
   }
   std::vector<double> mine, all(static_cast<std::size_t>(count), 0.0);
+  std::exception_ptr meanwhileFailure;
   try {
-    rewardsOfSlice(tasks, actions, session.rank(), session.size(), threads, mine);
+    const auto slice = [&] { rewardsOfSlice(tasks, actions, session.rank(), session.size(), threads, mine); };
+    if (meanwhile)
+      runBeside(slice, [&] {
+        try {
+          meanwhile();
+        } catch (...) {
+          meanwhileFailure = std::current_exception();
+        }
+      });
+    else
+      slice();
   } catch (const std::exception& e) {
     // The other ranks wait in the collective below: end them all rather than hang.
     std::fprintf(stderr, "policyTrain: error: rank %d: %s\n", session.rank(), e.what());
     std::fflush(stderr);
     MPI_Abort(MPI_COMM_WORLD, 1);
   }
+  // Rank 0's own failure (the learner's) after the collective, so the ranks stay in step.
   MPI_Reduce(mine.data(), all.data(), count, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
+  if (meanwhileFailure) std::rethrow_exception(meanwhileFailure);
   return all;
 }
 
@@ -69,11 +84,16 @@ MpiRollouts::~MpiRollouts() {
 
 std::vector<double> MpiRollouts::rewards(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
                                          const EpisodeRange& range) {
+  return rewardsWhile(tasks, actions, range, {});
+}
+
+std::vector<double> MpiRollouts::rewardsWhile(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
+                                              const EpisodeRange& range, const std::function<void()>& meanwhile) {
   Header h{evaluateCommand, range.seed, range.first, tasks.size(), range.step,
            static_cast<std::uint64_t>(range.purpose)};
   broadcastHeader(h);
   PolicyBatch copy = actions;
-  return evaluateBatch(session_, environment_, threads_, h, tasks, copy);
+  return evaluateBatch(session_, environment_, threads_, h, tasks, copy, meanwhile);
 }
 
 std::string MpiRollouts::description() const {

@@ -80,6 +80,9 @@ const Words<EdgeRadiusDraw> edgeRadiusWords{
     "edgeRadii", {{"halfLogUniform", EdgeRadiusDraw::halfLogUniform}, {"uniform", EdgeRadiusDraw::uniform}}};
 const Words<TrainingMeshes> trainingMeshesWords{
     "trainingMeshes", {{"asPolicyMesh", TrainingMeshes::asPolicyMesh}, {"asAsked", TrainingMeshes::asAsked}}};
+const Words<LearnerSchedule> learnerScheduleWords{
+    "learnerSchedule",
+    {{"afterRollouts", LearnerSchedule::afterRollouts}, {"duringNextRollouts", LearnerSchedule::duringNextRollouts}}};
 const Words<CriticModel> criticModelWords{
     "criticModel",
     {{"reward", CriticModel::reward},
@@ -92,10 +95,12 @@ ActorStart actorStartNamed(const std::string& word) { return actorStartWords.nam
 EdgeRadiusDraw edgeRadiusDrawNamed(const std::string& word) { return edgeRadiusWords.named(word); }
 CriticModel criticModelNamed(const std::string& word) { return criticModelWords.named(word); }
 TrainingMeshes trainingMeshesNamed(const std::string& word) { return trainingMeshesWords.named(word); }
+LearnerSchedule learnerScheduleNamed(const std::string& word) { return learnerScheduleWords.named(word); }
 std::string nameOf(ActorStart value) { return actorStartWords.nameOf(value); }
 std::string nameOf(EdgeRadiusDraw value) { return edgeRadiusWords.nameOf(value); }
 std::string nameOf(CriticModel value) { return criticModelWords.nameOf(value); }
 std::string nameOf(TrainingMeshes value) { return trainingMeshesWords.nameOf(value); }
+std::string nameOf(LearnerSchedule value) { return learnerScheduleWords.nameOf(value); }
 
 namespace {
 
@@ -237,6 +242,8 @@ const std::vector<Key>& keys() {
       {"edgeRadii", readChoice(edgeRadiusWords, &O::edgeRadii), [](const O& o) { return nameOf(o.edgeRadii); }},
       {"trainingMeshes", readChoice(trainingMeshesWords, &O::trainingMeshes),
        [](const O& o) { return nameOf(o.trainingMeshes); }},
+      {"learnerSchedule", readChoice(learnerScheduleWords, &O::learnerSchedule),
+       [](const O& o) { return nameOf(o.learnerSchedule); }},
       {"criticModel", readChoice(criticModelWords, &O::criticModel), [](const O& o) { return nameOf(o.criticModel); }},
       {"validityBarrier", readPositive("validityBarrier", [](O& o) -> double& { return o.validityBarrier; }, true),
        [](const O& o) { return formatExact(o.validityBarrier); }},
@@ -309,6 +316,10 @@ PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file) {
     throw InputError(file.string(), dict.line("imitationWeight"),
                      "<imitationWeight> needs <searchEvery> above 0: without searches there are no "
                      "demonstrations to imitate");
+  if (options.learnerSchedule == LearnerSchedule::duringNextRollouts && options.searchEvery > 0)
+    throw InputError(file.string(), dict.line("learnerSchedule"),
+                     "<learnerSchedule>duringNextRollouts</learnerSchedule> needs <searchEvery> 0: a search "
+                     "uses the rollouts and the actor between two batches");
   if (options.wideNoiseShare > 1)
     throw InputError(file.string(), dict.line("wideNoiseShare"),
                      "<wideNoiseShare> is a share of the episodes: expected a value in [0, 1], got " +

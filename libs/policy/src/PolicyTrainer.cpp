@@ -112,6 +112,8 @@ PolicyTrainer::PolicyTrainer(const PolicyTrainOptions& options, const PolicyEnvi
       bestValidation_(-std::numeric_limits<double>::infinity()),
       start_(std::chrono::steady_clock::now()) {
   learner_.trainActorOutputsOnly(options_.actorTrainedActions);  // empty: every weight learns
+  if (options_.learnerSchedule == LearnerSchedule::duringNextRollouts && options_.searchEvery > 0)
+    throw std::invalid_argument("learnerSchedule duringNextRollouts needs searchEvery 0");
   for (int i = 0; i < options_.validationPassages; ++i)
     validationTasks_.push_back(
         environment_.draw(options_.validationSeed, static_cast<std::uint64_t>(i), EpisodePurpose::validation));
@@ -210,14 +212,28 @@ void PolicyTrainer::search(std::uint64_t index) {
     demonstrations_.add(task.state, std::vector<double>(result.best.data(), result.best.data() + m), result.bestValue);
 }
 
+void PolicyTrainer::learnPending() {
+  const PendingBatch batch = std::move(pending_);
+  pending_ = {};
+  for (Eigen::Index i = 0; i < batch.actions.rows(); ++i) {
+    const auto s = batch.states.row(i);
+    const auto a = batch.actions.row(i);
+    learnFrom(std::vector<double>(s.data(), s.data() + s.size()), std::vector<double>(a.data(), a.data() + a.size()),
+              batch.rewards(i));
+  }
+}
+
 void PolicyTrainer::runBatch() {
-  const long first = episode_;
+  const bool overlapped = options_.learnerSchedule == LearnerSchedule::duringNextRollouts;
+  if (!overlapped) learnPending();  // none, unless -startFrom an overlapped run's checkpoint
+  const long first = rolledOut();
   const int count = static_cast<int>(std::min<long>(options_.batchEpisodes, options_.episodes - first));
   std::vector<EpisodeTask> tasks(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i)
     tasks[static_cast<std::size_t>(i)] =
         environment_.draw(options_.seed, static_cast<std::uint64_t>(first + i), EpisodePurpose::training);
-  PolicyBatch actions = learner_.act(statesOf(tasks, environment_.stateSize()));
+  PolicyBatch states = statesOf(tasks, environment_.stateSize());
+  PolicyBatch actions = learner_.act(states);
   for (int i = 0; i < count; ++i) {
     std::mt19937_64 noise = episodeRandom(options_.seed, static_cast<std::uint64_t>(first + i), noiseStream);
     const double sigma = options_.noiseSigma(first + i);
@@ -229,13 +245,12 @@ void PolicyTrainer::runBatch() {
       actions(i, k) = std::clamp(actions(i, k) + (widen ? options_.wideNoiseSigma : sigma) * standardNormal(noise), -1.0, 1.0);
     }
   }
-  const std::vector<double> rewards =
-      rollouts_.rewards(tasks, actions, {options_.seed, static_cast<std::uint64_t>(first)});
-  for (int i = 0; i < count; ++i) {
-    const auto a = actions.row(i);
-    learnFrom(tasks[static_cast<std::size_t>(i)].state, std::vector<double>(a.data(), a.data() + a.size()),
-              rewards[static_cast<std::size_t>(i)]);
-  }
+  const EpisodeRange range{options_.seed, static_cast<std::uint64_t>(first)};
+  const std::vector<double> rewards = overlapped
+                                          ? rollouts_.rewardsWhile(tasks, actions, range, [&] { learnPending(); })
+                                          : rollouts_.rewards(tasks, actions, range);
+  pending_ = {std::move(states), std::move(actions), Eigen::Map<const Eigen::VectorXd>(rewards.data(), count)};
+  if (!overlapped) learnPending();
 }
 
 ValidationRecord PolicyTrainer::validateAction(const std::vector<double>& action) const {
@@ -266,7 +281,10 @@ bool PolicyTrainer::run(const std::atomic<bool>* stop, const Events& events) {
   while (episode_ < options_.episodes) {
     if (stop && stop->load()) return false;
     const long before = episode_;
-    runBatch();
+    if (rolledOut() < options_.episodes)
+      runBatch();
+    else
+      learnPending();  // the last batch of an overlapped run
     if (options_.searchEvery > 0)
       for (long k = before / options_.searchEvery + 1; k <= episode_ / options_.searchEvery; ++k)
         search(static_cast<std::uint64_t>(k));
@@ -311,6 +329,11 @@ void PolicyTrainer::saveCheckpoint(const std::filesystem::path& file) const {
   };
   writeBuffer(buffer_, "buffer");
   writeBuffer(demonstrations_, "demonstrations");
+  if (pending_.actions.rows() > 0) {  // learnerSchedule duringNextRollouts: built, not yet learnt
+    archive.write("pendingStates", batchTensor(pending_.states));
+    archive.write("pendingActions", batchTensor(pending_.actions));
+    archive.write("pendingRewards", batchTensor(PolicyBatch(pending_.rewards)));
+  }
   archive.write("recentRewards", batchTensor(Eigen::Map<const PolicyBatch>(recentRewards_.data(),
                                                                            static_cast<Eigen::Index>(recentRewards_.size()), 1)));
   archive.write("learning", tableTensor(learning_, 6, [](const LearningRecord& x) {
@@ -402,6 +425,9 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
     };
     ReplayBuffer buffer = readBuffer("buffer", "the buffer", false);
     ReplayBuffer demonstrations = readBuffer("demonstrations", "the demonstrations", true);
+    // The batch built but not yet learnt (learnerSchedule duringNextRollouts), in order.
+    PendingBatch pending;
+    readBuffer("pending", "the pending batch", true).exportEpisodes(pending.states, pending.actions, pending.rewards);
     std::vector<double> recent;
     torch::Tensor recentTensor;
     if (archive.try_read("recentRewards", recentTensor)) {
@@ -439,6 +465,7 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
     minibatchRandom_ = rng;
     buffer_ = std::move(buffer);
     demonstrations_ = std::move(demonstrations);
+    pending_ = std::move(pending);
     recentRewards_ = std::move(recent);
     learning_ = std::move(learningRecords);
     validation_ = std::move(validationRecords);

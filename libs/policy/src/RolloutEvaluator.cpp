@@ -1,6 +1,8 @@
 #include "passageMesh/policy/RolloutEvaluator.hpp"
 
+#include <exception>
 #include <string>
+#include <thread>
 
 #include "passageMesh/core/ParallelFor.hpp"
 
@@ -19,12 +21,47 @@ void rewardsOfSlice(const std::vector<EpisodeTask>& tasks, const PolicyBatch& ac
   });
 }
 
+void runBeside(const std::function<void()>& work, const std::function<void()>& meanwhile) {
+  std::exception_ptr workFailure, meanwhileFailure;
+  std::thread worker([&] {
+    try {
+      work();
+    } catch (...) {
+      workFailure = std::current_exception();
+    }
+  });
+  try {
+    meanwhile();
+  } catch (...) {
+    meanwhileFailure = std::current_exception();
+  }
+  worker.join();
+  if (meanwhileFailure) std::rethrow_exception(meanwhileFailure);
+  if (workFailure) std::rethrow_exception(workFailure);
+}
+
+std::vector<double> RolloutEvaluator::rewardsWhile(const std::vector<EpisodeTask>& tasks,
+                                                   const PolicyBatch& actions, const EpisodeRange& range,
+                                                   const std::function<void()>& meanwhile) {
+  std::vector<double> r = rewards(tasks, actions, range);
+  meanwhile();
+  return r;
+}
+
 ThreadRollouts::ThreadRollouts(int threads) : threads_(threads) {}
 
 std::vector<double> ThreadRollouts::rewards(const std::vector<EpisodeTask>& tasks,
                                             const PolicyBatch& actions, const EpisodeRange&) {
   std::vector<double> r;
   rewardsOfSlice(tasks, actions, 0, 1, threads_, r);
+  return r;
+}
+
+std::vector<double> ThreadRollouts::rewardsWhile(const std::vector<EpisodeTask>& tasks,
+                                                 const PolicyBatch& actions, const EpisodeRange&,
+                                                 const std::function<void()>& meanwhile) {
+  std::vector<double> r;
+  runBeside([&] { rewardsOfSlice(tasks, actions, 0, 1, threads_, r); }, meanwhile);
   return r;
 }
 

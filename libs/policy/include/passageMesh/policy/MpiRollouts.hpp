@@ -32,6 +32,8 @@ class MpiRollouts final : public RolloutEvaluator {
   ~MpiRollouts() override;  // tells the other ranks to stop
   std::vector<double> rewards(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
                               const EpisodeRange& range) override;
+  std::vector<double> rewardsWhile(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
+                                   const EpisodeRange& range, const std::function<void()>& meanwhile) override;
   std::string description() const override;
 
  private:

@@ -20,6 +20,12 @@ namespace passageMesh {
 // a meshDict file's parameters (PolicyTrainOptions::actorStartMeshDict).
 enum class ActorStart { random, defaults, meshDict };
 
+// When the learner takes a batch's episodes: after its rollouts, before the next batch's
+// actions (afterRollouts, the paper's order), or while the next batch's meshes are built
+// (duringNextRollouts: the learner's thread works beside the rollouts instead of after
+// them, and each batch's actions come from the actor before the previous batch's updates).
+enum class LearnerSchedule { afterRollouts, duringNextRollouts };
+
 struct PolicyTrainOptions {
   long episodes = 100000;         // episodes in the whole run (a resumed run continues to it)
   int batchEpisodes = 32;         // rollouts per batch: one actor snapshot, built in parallel
@@ -82,6 +88,8 @@ struct PolicyTrainOptions {
   // (no moves: -1 for such an episode, a fraction of the time). Validation meshes as
   // policyMesh either way (PolicyEnvironment.hpp; docs/policy.md "Training meshes").
   TrainingMeshes trainingMeshes = TrainingMeshes::asPolicyMesh;
+  // When the learner takes a batch (LearnerSchedule above; docs/policy.md "Training loop").
+  LearnerSchedule learnerSchedule = LearnerSchedule::afterRollouts;
   // What the critic predicts: reward (the paper's), validityAndQuality or
   // validityAndBoundedQuality (NetworkLayout.hpp; docs/policy.md measures them).
   CriticModel criticModel = CriticModel::reward;
@@ -117,10 +125,12 @@ ActorStart actorStartNamed(const std::string& word);
 EdgeRadiusDraw edgeRadiusDrawNamed(const std::string& word);
 CriticModel criticModelNamed(const std::string& word);
 TrainingMeshes trainingMeshesNamed(const std::string& word);
+LearnerSchedule learnerScheduleNamed(const std::string& word);
 std::string nameOf(ActorStart value);
 std::string nameOf(EdgeRadiusDraw value);
 std::string nameOf(CriticModel value);
 std::string nameOf(TrainingMeshes value);
+std::string nameOf(LearnerSchedule value);
 
 // A missing file gives the defaults; a missing key keeps its default; an unknown key, a
 // malformed or out-of-range value is an InputError naming the file and the line.

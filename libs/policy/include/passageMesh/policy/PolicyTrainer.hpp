@@ -6,7 +6,9 @@
 // plus Gaussian noise from each episode's own noise stream, the rewards are computed by the
 // RolloutEvaluator (threads or MPI ranks), and then, episode by episode in order, the
 // episode enters the replay buffer and the learner takes its updates (critic every
-// episode, actor every actorUpdateEvery). With options.searchEvery > 0 a search of one
+// episode, actor every actorUpdateEvery); with learnerSchedule duringNextRollouts the
+// learner takes them while the next batch's meshes are built, that batch's actions coming
+// from the actor before those updates. With options.searchEvery > 0 a search of one
 // passage's actions follows every searchEvery episodes (search-guided exploration,
 // PolicyTrainOptions.hpp). Nothing depends on the number of threads or ranks, and a
 // checkpoint taken between batches resumes to the same weights bit for bit.
@@ -111,6 +113,8 @@ class PolicyTrainer {
 
  private:
   void runBatch();
+  void learnPending();
+  long rolledOut() const { return episode_ + pending_.actions.rows(); }
   void learnFrom(const std::vector<double>& state, const std::vector<double>& action, double reward);
   void validate();
   void search(std::uint64_t index);
@@ -126,7 +130,13 @@ class PolicyTrainer {
   long searches_ = 0, gainSearches_ = 0;
   double searchGainSum_ = 0;
   std::mt19937_64 minibatchRandom_;
-  long episode_ = 0;
+  long episode_ = 0;  // episodes the learner has taken
+  // The batch whose meshes are built but whose episodes the learner has not taken yet
+  // (learnerSchedule duringNextRollouts; empty between batches otherwise).
+  struct PendingBatch {
+    PolicyBatch states, actions;
+    Eigen::VectorXd rewards;
+  } pending_;
   std::vector<LearningRecord> learning_;
   std::vector<ValidationRecord> validation_;
   double bestValidation_;

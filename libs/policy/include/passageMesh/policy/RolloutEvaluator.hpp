@@ -3,6 +3,7 @@
 // (ThreadRollouts) or MPI ranks (MpiRollouts.hpp). Either way episode i's reward depends on
 // its task and action only, so training gives the same weights wherever rollouts run.
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "passageMesh/policy/PolicyEnvironment.hpp"
@@ -26,6 +27,11 @@ class RolloutEvaluator {
   // `range` names.
   virtual std::vector<double> rewards(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
                                       const EpisodeRange& range) = 0;
+  // The same rewards, with `meanwhile` run on the calling thread while they are computed
+  // (the learner beside the rollouts: PolicyTrainOptions' learnerSchedule); an exception of
+  // either comes out after both have ended. This default runs the two one after the other.
+  virtual std::vector<double> rewardsWhile(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
+                                           const EpisodeRange& range, const std::function<void()>& meanwhile);
   // Processes and threads taking part, for the progress line.
   virtual std::string description() const = 0;
 };
@@ -35,6 +41,8 @@ class ThreadRollouts final : public RolloutEvaluator {
   explicit ThreadRollouts(int threads);  // 0 = all cores
   std::vector<double> rewards(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
                               const EpisodeRange& range) override;
+  std::vector<double> rewardsWhile(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
+                                   const EpisodeRange& range, const std::function<void()>& meanwhile) override;
   std::string description() const override;
 
  private:
@@ -45,5 +53,9 @@ class ThreadRollouts final : public RolloutEvaluator {
 // `threads` threads: the shared loop of both evaluators.
 void rewardsOfSlice(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions, int offset,
                     int stride, int threads, std::vector<double>& rewards);
+
+// Runs `work` on a thread of its own and `meanwhile` on the calling one; after both have
+// ended, rethrows meanwhile's exception, else work's.
+void runBeside(const std::function<void()>& work, const std::function<void()>& meanwhile);
 
 }  // namespace passageMesh
