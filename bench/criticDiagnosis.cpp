@@ -1,5 +1,5 @@
 // criticDiagnosis: what a training's critic believes against the mesher's true Q, on the
-// validation passages (docs/policy.md "Where the one-shot Q is lost").
+// validation passages (docs/policy-history.md "Where the one-shot Q is lost").
 //   criticDiagnosis CASE SEED PASSAGES slices HALFWIDTH POINTS OUT.csv
 //   criticDiagnosis CASE SEED PASSAGES cmaes BUDGET
 // CASE is a policyTrain case (its system/policyTrainDict.xml and policy/checkpoint.pt);

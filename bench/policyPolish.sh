@@ -1,7 +1,7 @@
 #!/bin/bash
 # The shipped policy's one-shot mesh, then a short iterOptimize (CMA-ES, seed 1) started
 # from the policy's parameters: how far a few more meshes take each tutorial towards the
-# best of iterOptimize -budget 1000 (docs/policy.md "One shot, then a short search").
+# best of iterOptimize -budget 1000 (docs/policy-history.md "One shot, then a short search").
 #   bench/policyPolish.sh BUDGET [POLICY.xml | defaults]      (tools on PATH)
 # Prints blade,oneShotQ,polishedQ,seconds (seconds: the polish alone, wall time).
 # `defaults`: the same short search from etc/meshDictDefaults.xml instead (the baseline).
