@@ -45,11 +45,12 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   EXPECT_NE(policyTrainDictXml(o).find("<actorTrainsOnly>splitOut splitIn</actorTrainsOnly>"), std::string::npos);
   EXPECT_EQ(readPolicyTrainDict(file.parent_path() / "missing.xml").episodes, PolicyTrainOptions{}.episodes);
 
-  PolicyTrainOptions overlapped;  // (not with searches: above)
-  overlapped.learnerSchedule = LearnerSchedule::duringNextRollouts;
-  const auto overlappedFile = testData::writeTempFile("policyTrainDict", "overlapped.xml", policyTrainDictXml(overlapped));
-  EXPECT_EQ(readPolicyTrainDict(overlappedFile).learnerSchedule, LearnerSchedule::duringNextRollouts);
-  EXPECT_EQ(o.learnerSchedule, LearnerSchedule::afterRollouts);  // the paper's order by default
+  PolicyTrainOptions learnsDuringRollouts;  // (not with searches: above)
+  learnsDuringRollouts.learnerSchedule = LearnerSchedule::duringNextRollouts;
+  const auto scheduleFile =
+      testData::writeTempFile("policyTrainDict", "schedule.xml", policyTrainDictXml(learnsDuringRollouts));
+  EXPECT_EQ(readPolicyTrainDict(scheduleFile).learnerSchedule, LearnerSchedule::duringNextRollouts);
+  EXPECT_EQ(PolicyTrainOptions{}.learnerSchedule, LearnerSchedule::afterRollouts);  // the paper's order
 }
 
 TEST(PolicyTrainOptions, PaperNoiseSchedule) {

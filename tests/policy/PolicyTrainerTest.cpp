@@ -50,24 +50,24 @@ std::pair<PolicyBatch, Eigen::VectorXd> fingerprint(const ActorCritic& learner, 
 // and with the learner beside the next batch's rollouts (the checkpoint holds a batch built
 // but not yet learnt).
 TEST(PolicyTrainer, ResumingFromACheckpointGivesTheSameWeightsBitForBit) {
-  for (const std::string critic : {"reward", "validityAndQuality", "searches", "duringNextRollouts"}) {
-    SCOPED_TRACE("criticModel " + critic);
+  for (const std::string variant : {"reward", "validityAndQuality", "searches", "duringNextRollouts"}) {
+    SCOPED_TRACE(variant);
     const ToyEnvironment toy(24, 8, 3, 0.05);
     PolicyTrainOptions run = smallRun(300);
-    if (critic == "searches") {
+    if (variant == "searches") {
       run.searchEvery = 48;  // not a multiple of the batch: one search follows episode 48's batch
       run.searchBudget = 12;
       run.imitationWeight = 1;
-    } else if (critic == "duringNextRollouts") {
+    } else if (variant == "duringNextRollouts") {
       run.learnerSchedule = LearnerSchedule::duringNextRollouts;
     } else {
-      run.criticModel = criticModelNamed(critic);
+      run.criticModel = criticModelNamed(variant);
     }
     ThreadRollouts rollouts(1);
     PolicyTrainer straight(run, toy, rollouts);
     ASSERT_TRUE(straight.run(nullptr, {}));
 
-    const auto file = testData::tempFolder("policyTrainer" + critic) / "checkpoint.pt";
+    const auto file = testData::tempFolder("policyTrainer" + variant) / "checkpoint.pt";
     {
       PolicyTrainer first(run, toy, rollouts);
       std::atomic<bool> stop{false};
@@ -94,7 +94,7 @@ TEST(PolicyTrainer, ResumingFromACheckpointGivesTheSameWeightsBitForBit) {
     EXPECT_EQ(resumed.searchSummary().searches, straight.searchSummary().searches);
     EXPECT_EQ(resumed.searchSummary().meanGain, straight.searchSummary().meanGain);
     EXPECT_EQ(resumed.demonstrations().size(), straight.demonstrations().size());
-    if (critic == "validityAndQuality") {
+    if (variant == "validityAndQuality") {
       const std::vector<double> rewards = straight.buffer().recentRewards(300);
       EXPECT_GT(std::count(rewards.begin(), rewards.end(), -1.0), 10) << "the toy gave too few failures";
     }
@@ -458,4 +458,44 @@ TEST(PolicyTrainer, TheActorWaitsForItsFirstUpdateEpisode) {
   EXPECT_EQ(fingerprint(waiting.learner(), 24, 8).first, fingerprint(fresh.learner(), 24, 8).first);
   EXPECT_NE(fingerprint(waiting.learner(), 24, 8).second, fingerprint(fresh.learner(), 24, 8).second);
   EXPECT_NE(fingerprint(straight.learner(), 24, 8).first, fingerprint(fresh.learner(), 24, 8).first);
+}
+
+// A checkpoint of the learner-beside-rollouts schedule holds a batch built but not yet
+// learnt: a run of the paper's order started from it (-startFrom) learns it first and ends
+// at its episodes; asking for fewer episodes than the checkpoint has built is refused.
+TEST(PolicyTrainer, ABatchBuiltButNotLearntIsLearntFirstWhenStartedUnderTheOtherSchedule) {
+  const ToyEnvironment toy(24, 8, 3);
+  ThreadRollouts rollouts(1);
+  PolicyTrainOptions during = smallRun(160);
+  during.learnerSchedule = LearnerSchedule::duringNextRollouts;
+  const auto file = testData::tempFolder("policyTrainerSchedules") / "checkpoint.pt";
+  {
+    PolicyTrainer first(during, toy, rollouts);
+    std::atomic<bool> stop{false};
+    PolicyTrainer::Events events;
+    events.checkpointDue = [&](const PolicyTrainer& t) {
+      t.saveCheckpoint(file);
+      stop = true;
+    };
+    ASSERT_FALSE(first.run(&stop, events));
+    ASSERT_EQ(first.episode(), 64);
+    ASSERT_EQ(first.buffer().size(), 64);  // the batch of episodes 64-79 is built, not learnt
+  }
+  PolicyTrainer after(smallRun(160), toy, rollouts);
+  after.resume(file, false);
+  EXPECT_EQ(after.episode(), 64);
+  ASSERT_TRUE(after.run(nullptr, {}));
+  EXPECT_EQ(after.episode(), 160);
+  EXPECT_EQ(after.buffer().size(), 160);
+
+  PolicyTrainOptions fewer = during;
+  fewer.episodes = 72;
+  PolicyTrainer tooShort(fewer, toy, rollouts);
+  try {
+    tooShort.resume(file);
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the checkpoint has built 80 episodes (64 learnt): ask for at least that many <episodes>, not 72"),
+              std::string::npos) << e.what();
+  }
 }

@@ -111,14 +111,14 @@ TEST(PolicyTrainCommand, TwoMpiRanksGiveTheWeightsOfTwoThreads) {
   EXPECT_EQ(readText(ranks / "policy" / "final.pt"), readText(threads / "policy" / "final.pt"));
 
   // The learner beside the next batch's rollouts: on rank 0 it runs while the ranks mesh.
-  const std::string overlapped = "  <learnerSchedule>duringNextRollouts</learnerSchedule>\n";
-  const fs::path threadsOverlapped = trainingCase("policyTrainThreadsOverlapped", 64, overlapped);
-  ASSERT_EQ(runTool(policyTrain, threadsOverlapped).exitCode, 0);
-  const fs::path ranksOverlapped = trainingCase("policyTrainRanksOverlapped", 64, overlapped);
-  const RunResult o = runCommand("mpirun", "-np 2 '" + policyTrain + "' -case '" + ranksOverlapped.string() +
-                                               "' -parallel -threads 1", ranksOverlapped);
-  ASSERT_EQ(o.exitCode, 0) << o.err;
-  EXPECT_EQ(readText(ranksOverlapped / "policy" / "final.pt"), readText(threadsOverlapped / "policy" / "final.pt"));
+  const std::string duringRollouts = "  <learnerSchedule>duringNextRollouts</learnerSchedule>\n";
+  const fs::path threadsLearning = trainingCase("policyTrainThreadsLearnDuringRollouts", 64, duringRollouts);
+  ASSERT_EQ(runTool(policyTrain, threadsLearning).exitCode, 0);
+  const fs::path ranksLearning = trainingCase("policyTrainRanksLearnDuringRollouts", 64, duringRollouts);
+  const RunResult d = runCommand("mpirun", "-np 2 '" + policyTrain + "' -case '" + ranksLearning.string() +
+                                               "' -parallel -threads 1", ranksLearning);
+  ASSERT_EQ(d.exitCode, 0) << d.err;
+  EXPECT_EQ(readText(ranksLearning / "policy" / "final.pt"), readText(threadsLearning / "policy" / "final.pt"));
 }
 
 TEST(PolicyMeshCommand, MeshesWithATrainedPolicyAndRefusesBadPolicyFiles) {

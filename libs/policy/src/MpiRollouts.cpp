@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "passageMesh/core/ParallelFor.hpp"
 
@@ -37,22 +38,32 @@ std::vector<double> evaluateBatch(const MpiSession& session, const PolicyEnviron
           environment.draw(range.seed, range.episode(static_cast<std::size_t>(i)), range.purpose);
   }
   std::vector<double> mine, all(static_cast<std::size_t>(count), 0.0);
-  std::exception_ptr meanwhileFailure;
+  std::exception_ptr sliceFailure, meanwhileFailure;
+  const auto slice = [&] {
+    try {
+      rewardsOfSlice(tasks, actions, session.rank(), session.size(), threads, mine);
+    } catch (...) {
+      sliceFailure = std::current_exception();
+    }
+  };
   try {
-    const auto slice = [&] { rewardsOfSlice(tasks, actions, session.rank(), session.size(), threads, mine); };
     if (meanwhile)
-      runBeside(slice, [&] {
-        try {
-          meanwhile();
-        } catch (...) {
-          meanwhileFailure = std::current_exception();
-        }
-      });
+      runBeside(slice, meanwhile);
     else
       slice();
-  } catch (const std::exception& e) {
+  } catch (...) {  // (the slice throws nothing: this is meanwhile's)
+    meanwhileFailure = std::current_exception();
+  }
+  if (sliceFailure) {
     // The other ranks wait in the collective below: end them all rather than hang.
-    std::fprintf(stderr, "policyTrain: error: rank %d: %s\n", session.rank(), e.what());
+    std::string what = "unknown error";
+    try {
+      std::rethrow_exception(sliceFailure);
+    } catch (const std::exception& e) {
+      what = e.what();
+    } catch (...) {
+    }
+    std::fprintf(stderr, "policyTrain: error: rank %d: %s\n", session.rank(), what.c_str());
     std::fflush(stderr);
     MPI_Abort(MPI_COMM_WORLD, 1);
   }
@@ -68,6 +79,12 @@ MpiSession::MpiSession(int& argc, char**& argv) {
   // Only the main thread calls MPI; rollouts run on other threads meanwhile.
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  if (provided < MPI_THREAD_FUNNELED) {
+    std::fprintf(stderr, "policyTrain: error: this MPI library gives no thread support (MPI_THREAD_FUNNELED "
+                         "asked, level %d given): the rollouts run on threads beside MPI's\n", provided);
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  }
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
 }

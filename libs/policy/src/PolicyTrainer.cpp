@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <utility>
 
 #include "passageMesh/core/InputError.hpp"
 #include "passageMesh/policy/ActionSearch.hpp"
@@ -213,8 +214,7 @@ void PolicyTrainer::search(std::uint64_t index) {
 }
 
 void PolicyTrainer::learnPending() {
-  const PendingBatch batch = std::move(pending_);
-  pending_ = {};
+  const PendingBatch batch = std::exchange(pending_, {});
   for (Eigen::Index i = 0; i < batch.actions.rows(); ++i) {
     const auto s = batch.states.row(i);
     const auto a = batch.actions.row(i);
@@ -224,9 +224,9 @@ void PolicyTrainer::learnPending() {
 }
 
 void PolicyTrainer::runBatch() {
-  const bool overlapped = options_.learnerSchedule == LearnerSchedule::duringNextRollouts;
-  if (!overlapped) learnPending();  // none, unless -startFrom an overlapped run's checkpoint
-  const long first = rolledOut();
+  const bool learnsDuringRollouts = options_.learnerSchedule == LearnerSchedule::duringNextRollouts;
+  if (!learnsDuringRollouts) learnPending();  // none, unless started from a duringNextRollouts checkpoint
+  const long first = builtEpisodes();
   const int count = static_cast<int>(std::min<long>(options_.batchEpisodes, options_.episodes - first));
   std::vector<EpisodeTask> tasks(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i)
@@ -246,11 +246,11 @@ void PolicyTrainer::runBatch() {
     }
   }
   const EpisodeRange range{options_.seed, static_cast<std::uint64_t>(first)};
-  const std::vector<double> rewards = overlapped
+  const std::vector<double> rewards = learnsDuringRollouts
                                           ? rollouts_.rewardsWhile(tasks, actions, range, [&] { learnPending(); })
                                           : rollouts_.rewards(tasks, actions, range);
   pending_ = {std::move(states), std::move(actions), Eigen::Map<const Eigen::VectorXd>(rewards.data(), count)};
-  if (!overlapped) learnPending();
+  if (!learnsDuringRollouts) learnPending();
 }
 
 ValidationRecord PolicyTrainer::validateAction(const std::vector<double>& action) const {
@@ -281,10 +281,10 @@ bool PolicyTrainer::run(const std::atomic<bool>* stop, const Events& events) {
   while (episode_ < options_.episodes) {
     if (stop && stop->load()) return false;
     const long before = episode_;
-    if (rolledOut() < options_.episodes)
+    if (builtEpisodes() < options_.episodes)
       runBatch();
     else
-      learnPending();  // the last batch of an overlapped run
+      learnPending();  // the last batch, built during the one before
     if (options_.searchEvery > 0)
       for (long k = before / options_.searchEvery + 1; k <= episode_ / options_.searchEvery; ++k)
         search(static_cast<std::uint64_t>(k));
@@ -319,21 +319,22 @@ void PolicyTrainer::saveCheckpoint(const std::filesystem::path& file) const {
                              static_cast<double>(lossCount_), secondsTrained(), static_cast<double>(searches_),
                              static_cast<double>(gainSearches_), searchGainSum_};
   archive.write("counters", torch::tensor(at::ArrayRef<double>(counters, 8), torch::kFloat64));
-  const auto writeBuffer = [&](const ReplayBuffer& buffer, const std::string& name) {
-    PolicyBatch s, a;
-    Eigen::VectorXd r;
-    buffer.exportEpisodes(s, a, r);
+  const auto writeEpisodes = [&](const std::string& name, const PolicyBatch& s, const PolicyBatch& a,
+                                 const Eigen::VectorXd& r) {
     archive.write(name + "States", batchTensor(s));
     archive.write(name + "Actions", batchTensor(a));
     archive.write(name + "Rewards", batchTensor(PolicyBatch(r)));
   };
+  const auto writeBuffer = [&](const ReplayBuffer& buffer, const std::string& name) {
+    PolicyBatch s, a;
+    Eigen::VectorXd r;
+    buffer.exportEpisodes(s, a, r);
+    writeEpisodes(name, s, a, r);
+  };
   writeBuffer(buffer_, "buffer");
   writeBuffer(demonstrations_, "demonstrations");
-  if (pending_.actions.rows() > 0) {  // learnerSchedule duringNextRollouts: built, not yet learnt
-    archive.write("pendingStates", batchTensor(pending_.states));
-    archive.write("pendingActions", batchTensor(pending_.actions));
-    archive.write("pendingRewards", batchTensor(PolicyBatch(pending_.rewards)));
-  }
+  if (pending_.actions.rows() > 0)  // learnerSchedule duringNextRollouts: built, not yet learnt
+    writeEpisodes("pending", pending_.states, pending_.actions, pending_.rewards);
   archive.write("recentRewards", batchTensor(Eigen::Map<const PolicyBatch>(recentRewards_.data(),
                                                                            static_cast<Eigen::Index>(recentRewards_.size()), 1)));
   archive.write("learning", tableTensor(learning_, 6, [](const LearningRecord& x) {
@@ -407,27 +408,36 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
       throw corrupt("the counters have the wrong shape or type");
     table(learning, 6, "the learning curve");
     table(validation, 5, "the validation curve");
-    const auto readBuffer = [&](const std::string& prefix, const std::string& what, bool optional) {
-      ReplayBuffer buffer(learner_.layout().stateSize, learner_.layout().actionSize, options_.bufferCapacity);
+    // Episodes stored as three tensors; false when optional and absent.
+    const auto readEpisodes = [&](const std::string& prefix, const std::string& what, bool optional,
+                                  PendingBatch& episodes) {
       torch::Tensor s, a, r;
-      if (optional && !archive.try_read(prefix + "States", s)) return buffer;
+      if (optional && !archive.try_read(prefix + "States", s)) return false;
       if (!optional) archive.read(prefix + "States", s);
       archive.read(prefix + "Actions", a);
       archive.read(prefix + "Rewards", r);
       table(s, learner_.layout().stateSize, what + "'s states");
       table(a, learner_.layout().actionSize, what + "'s actions");
       table(r, 1, what + "'s rewards");
-      if (a.size(0) != s.size(0) || r.size(0) != s.size(0) || s.size(0) > options_.bufferCapacity)
-        throw corrupt(what + " holds " + std::to_string(s.size(0)) + " rows, more than <bufferCapacity> or "
-                      "unequal parts");
-      buffer.importEpisodes(batchFromTensor(s), batchFromTensor(a), batchFromTensor(r).col(0));
+      if (a.size(0) != s.size(0) || r.size(0) != s.size(0))
+        throw corrupt(what + " has parts of unequal length");
+      episodes = {batchFromTensor(s), batchFromTensor(a), batchFromTensor(r).col(0)};
+      return true;
+    };
+    const auto readBuffer = [&](const std::string& prefix, const std::string& what, bool optional) {
+      ReplayBuffer buffer(learner_.layout().stateSize, learner_.layout().actionSize, options_.bufferCapacity);
+      PendingBatch episodes;
+      if (!readEpisodes(prefix, what, optional, episodes)) return buffer;
+      if (episodes.actions.rows() > options_.bufferCapacity)
+        throw corrupt(what + " holds " + std::to_string(episodes.actions.rows()) + " rows, more than <bufferCapacity>");
+      buffer.importEpisodes(episodes.states, episodes.actions, episodes.rewards);
       return buffer;
     };
     ReplayBuffer buffer = readBuffer("buffer", "the buffer", false);
     ReplayBuffer demonstrations = readBuffer("demonstrations", "the demonstrations", true);
     // The batch built but not yet learnt (learnerSchedule duringNextRollouts), in order.
     PendingBatch pending;
-    readBuffer("pending", "the pending batch", true).exportEpisodes(pending.states, pending.actions, pending.rewards);
+    readEpisodes("pending", "the pending batch", true, pending);
     std::vector<double> recent;
     torch::Tensor recentTensor;
     if (archive.try_read("recentRewards", recentTensor)) {
@@ -448,6 +458,11 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
     for (long i = 0; i < validation.size(0); ++i)
       validationRecords.push_back(ValidationRecord{static_cast<long>(v[i][0]), v[i][1], v[i][2],
                                                    static_cast<int>(v[i][3]), static_cast<int>(v[i][4])});
+    const long learnt = static_cast<long>(counters[0].item<double>());
+    if (pending.actions.rows() > 0 && learnt + pending.actions.rows() > options_.episodes)
+      throw InputError(name, 0, "the checkpoint has built " + std::to_string(learnt + pending.actions.rows()) +
+                                    " episodes (" + std::to_string(learnt) + " learnt): ask for at least that many "
+                                    "<episodes>, not " + std::to_string(options_.episodes));
     torch::serialize::InputArchive networks;
     archive.read("networks", networks);
     learner_.load(networks);  // last: it can fail too, and then the run ends anyway

@@ -1,8 +1,6 @@
 #include "passageMesh/policy/RolloutEvaluator.hpp"
 
-#include <exception>
 #include <string>
-#include <thread>
 
 #include "passageMesh/core/ParallelFor.hpp"
 
@@ -19,25 +17,6 @@ void rewardsOfSlice(const std::vector<EpisodeTask>& tasks, const PolicyBatch& ac
     rewards[static_cast<std::size_t>(i)] =
         tasks[static_cast<std::size_t>(i)].reward(std::vector<double>(row.data(), row.data() + row.size()));
   });
-}
-
-void runBeside(const std::function<void()>& work, const std::function<void()>& meanwhile) {
-  std::exception_ptr workFailure, meanwhileFailure;
-  std::thread worker([&] {
-    try {
-      work();
-    } catch (...) {
-      workFailure = std::current_exception();
-    }
-  });
-  try {
-    meanwhile();
-  } catch (...) {
-    meanwhileFailure = std::current_exception();
-  }
-  worker.join();
-  if (meanwhileFailure) std::rethrow_exception(meanwhileFailure);
-  if (workFailure) std::rethrow_exception(workFailure);
 }
 
 std::vector<double> RolloutEvaluator::rewardsWhile(const std::vector<EpisodeTask>& tasks,

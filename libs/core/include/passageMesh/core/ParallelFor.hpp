@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -42,6 +43,29 @@ void parallelFor(int count, int threads, const Body& body) {
   worker();
   for (auto& thread : pool) thread.join();
   if (failure) std::rethrow_exception(failure);
+}
+
+// Runs `work` on a thread of its own and `meanwhile` on the calling one, then waits for
+// both; rethrows meanwhile's exception, else work's. `meanwhile` stays on the calling thread
+// because what it does may be bound to it (the policy trainer's learner: LibTorch set to
+// one thread there, and MPI funnelled through the main thread).
+inline void runBeside(const std::function<void()>& work, const std::function<void()>& meanwhile) {
+  std::exception_ptr workFailure, meanwhileFailure;
+  std::thread worker([&] {
+    try {
+      work();
+    } catch (...) {
+      workFailure = std::current_exception();
+    }
+  });
+  try {
+    meanwhile();
+  } catch (...) {
+    meanwhileFailure = std::current_exception();
+  }
+  worker.join();
+  if (meanwhileFailure) std::rethrow_exception(meanwhileFailure);
+  if (workFailure) std::rethrow_exception(workFailure);
 }
 
 }  // namespace passageMesh

@@ -58,7 +58,10 @@ class PolicyTrainer {
   // an unreadable or mismatched checkpoint is an InputError naming the file. With
   // sameSettings false the checkpoint may come from a run with another seed and other
   // settings (the same networks): its weights, optimisers, buffer, curves and episode
-  // count carry on under this trainer's settings (policyTrain -startFrom).
+  // count carry on under this trainer's settings (policyTrain -startFrom); a batch built but
+  // not yet learnt (a checkpoint of learnerSchedule duringNextRollouts) is learnt first
+  // under either schedule. A checkpoint whose built episodes pass options.episodes is
+  // refused (the run would end past them).
   void resume(const std::filesystem::path& checkpoint, bool sameSettings = true);
   // Starts the actor as a trained policy's (policyTrain -actorFrom): a single policy whose
   // state was scaled as `scaling` (this run's), with this run's hidden layers and as many or
@@ -114,7 +117,8 @@ class PolicyTrainer {
  private:
   void runBatch();
   void learnPending();
-  long rolledOut() const { return episode_ + pending_.actions.rows(); }
+  // Episodes whose meshes are built: those learnt and the pending batch.
+  long builtEpisodes() const { return episode_ + pending_.actions.rows(); }
   void learnFrom(const std::vector<double>& state, const std::vector<double>& action, double reward);
   void validate();
   void search(std::uint64_t index);

@@ -29,7 +29,8 @@ class RolloutEvaluator {
                                       const EpisodeRange& range) = 0;
   // The same rewards, with `meanwhile` run on the calling thread while they are computed
   // (the learner beside the rollouts: PolicyTrainOptions' learnerSchedule); an exception of
-  // either comes out after both have ended. This default runs the two one after the other.
+  // either comes out after both have ended (meanwhile's first). This default runs
+  // `meanwhile` after the rewards, and not at all where they throw.
   virtual std::vector<double> rewardsWhile(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions,
                                            const EpisodeRange& range, const std::function<void()>& meanwhile);
   // Processes and threads taking part, for the progress line.
@@ -53,9 +54,5 @@ class ThreadRollouts final : public RolloutEvaluator {
 // `threads` threads: the shared loop of both evaluators.
 void rewardsOfSlice(const std::vector<EpisodeTask>& tasks, const PolicyBatch& actions, int offset,
                     int stride, int threads, std::vector<double>& rewards);
-
-// Runs `work` on a thread of its own and `meanwhile` on the calling one; after both have
-// ended, rethrows meanwhile's exception, else work's.
-void runBeside(const std::function<void()>& work, const std::function<void()>& meanwhile);
 
 }  // namespace passageMesh
