@@ -98,27 +98,24 @@ TEST(PolicyTrainCommand, TwoMpiRanksGiveTheWeightsOfTwoThreads) {
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
   setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 1);
+  // The same 64 episodes on two threads and on two ranks of one thread each: the same bytes.
+  const auto expectRanksGiveThreadsWeights = [](const std::string& name, const std::string& keys) {
+    SCOPED_TRACE(name);
+    const fs::path threads = trainingCase(name + "Threads", 64, keys);
+    ASSERT_EQ(runTool(policyTrain, threads).exitCode, 0);
+    const fs::path ranks = trainingCase(name + "Ranks", 64, keys);
+    const RunResult r = runCommand("mpirun", "-np 2 '" + policyTrain + "' -case '" + ranks.string() +
+                                                 "' -parallel -threads 1", ranks);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("2 MPI ranks"), std::string::npos) << r.out;
+    EXPECT_EQ(readText(ranks / "policy" / "final.pt"), readText(threads / "policy" / "final.pt"));
+  };
   // With searches: their batches (every row the same passage) go over the ranks too.
-  const std::string searches = "  <searchEvery>32</searchEvery>\n  <searchBudget>12</searchBudget>\n"
-                               "  <imitationWeight>1</imitationWeight>\n";
-  const fs::path threads = trainingCase("policyTrainThreads", 64, searches);
-  ASSERT_EQ(runTool(policyTrain, threads).exitCode, 0);
-  const fs::path ranks = trainingCase("policyTrainRanks", 64, searches);
-  const RunResult r = runCommand("mpirun", "-np 2 '" + policyTrain + "' -case '" + ranks.string() +
-                                               "' -parallel -threads 1", ranks);
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.out.find("2 MPI ranks"), std::string::npos) << r.out;
-  EXPECT_EQ(readText(ranks / "policy" / "final.pt"), readText(threads / "policy" / "final.pt"));
-
+  expectRanksGiveThreadsWeights("policyTrainSearches", "  <searchEvery>32</searchEvery>\n  <searchBudget>12</searchBudget>\n"
+                                                       "  <imitationWeight>1</imitationWeight>\n");
   // The learner beside the next batch's rollouts: on rank 0 it runs while the ranks mesh.
-  const std::string duringRollouts = "  <learnerSchedule>duringNextRollouts</learnerSchedule>\n";
-  const fs::path threadsLearning = trainingCase("policyTrainThreadsLearnDuringRollouts", 64, duringRollouts);
-  ASSERT_EQ(runTool(policyTrain, threadsLearning).exitCode, 0);
-  const fs::path ranksLearning = trainingCase("policyTrainRanksLearnDuringRollouts", 64, duringRollouts);
-  const RunResult d = runCommand("mpirun", "-np 2 '" + policyTrain + "' -case '" + ranksLearning.string() +
-                                               "' -parallel -threads 1", ranksLearning);
-  ASSERT_EQ(d.exitCode, 0) << d.err;
-  EXPECT_EQ(readText(ranksLearning / "policy" / "final.pt"), readText(threadsLearning / "policy" / "final.pt"));
+  expectRanksGiveThreadsWeights("policyTrainLearnDuringRollouts",
+                                "  <learnerSchedule>duringNextRollouts</learnerSchedule>\n");
 }
 
 TEST(PolicyMeshCommand, MeshesWithATrainedPolicyAndRefusesBadPolicyFiles) {
