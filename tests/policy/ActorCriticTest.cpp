@@ -177,6 +177,26 @@ TEST(ActorCritic, AnActorTrainingSomeOutputsOnlyKeepsTheOthersBitForBit) {
   EXPECT_THROW(learner.trainActorOutputsOnly({2}), std::invalid_argument);
 }
 
+// Held outputs are their start value for every state, before and after training, while the
+// others and the hidden layers learn (the splits held at 0 for a policy of eight actions).
+TEST(ActorCritic, HeldActorOutputsStayAtTheirStartForEveryState) {
+  NetworkLayout layout{3, 3, {16, 16}, 0.01};
+  PolicyBatch s(4, 3), target(4, 3);
+  s << -0.5, 0.2, 0.9, 0.1, -0.8, 0.3, 0.7, 0.7, -0.2, 0.0, 0.5, -0.6;
+  target << 0.6, -0.4, 0.5, -0.7, 0.2, -0.5, 0.3, 0.8, 0.4, -0.1, -0.9, -0.3;
+  ActorCritic learner(layout, {1e-2, 1e-3}, 3, {0.1, -0.2, 0.25});
+  learner.holdActorOutputs({2});
+  const PolicyBatch before = learner.act(s);
+  for (Eigen::Index i = 0; i < s.rows(); ++i) EXPECT_NEAR(before(i, 2), 0.25, 1e-7);  // (float weights)
+  for (int step = 0; step < 1500; ++step) learner.updateActor(s, 0, 0, Imitation{s, target, 10.0});
+  const PolicyBatch after = learner.act(s);
+  EXPECT_LT((after.leftCols(2) - target.leftCols(2)).cwiseAbs().maxCoeff(), 0.05);  // the others learn
+  for (Eigen::Index i = 0; i < s.rows(); ++i) EXPECT_EQ(after(i, 2), before(0, 2));
+  PolicyBatch far = 30.0 * s;  // any state, however far from the data
+  EXPECT_EQ(learner.act(far).col(2), PolicyBatch::Constant(4, 1, before(0, 2)));
+  EXPECT_THROW(learner.holdActorOutputs({3}), std::invalid_argument);
+}
+
 // validityAndBoundedQuality: the quality q = sigmoid(output) fits valid meshes' Q as the
 // unbounded one does, but no input, however far from the data, makes the expected reward
 // leave [-1, 1] (an unbounded q, fitted on the valid meshes only, extrapolates freely).

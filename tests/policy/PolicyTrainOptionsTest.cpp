@@ -50,6 +50,11 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   const auto scheduleFile =
       testData::writeTempFile("policyTrainDict", "schedule.xml", policyTrainDictXml(learnsDuringRollouts));
   EXPECT_EQ(readPolicyTrainDict(scheduleFile).learnerSchedule, LearnerSchedule::duringNextRollouts);
+  PolicyTrainOptions held;  // (not with actorTrainsOnly: above)
+  held.heldActions = {8, 9};
+  const auto heldFile = testData::writeTempFile("policyTrainDict", "held.xml", policyTrainDictXml(held));
+  EXPECT_EQ(readPolicyTrainDict(heldFile).heldActions, (std::vector<int>{8, 9}));
+  EXPECT_NE(policyTrainDictXml(held).find("<heldActions>splitIn splitOut</heldActions>"), std::string::npos);
   EXPECT_EQ(PolicyTrainOptions{}.learnerSchedule, LearnerSchedule::afterRollouts);  // the paper's order
 }
 
@@ -90,6 +95,11 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
   EXPECT_EQ(bad("<searchEvery>64</searchEvery>\n<imitationWeight>1</imitationWeight>"), "accepted");
   EXPECT_NE(bad("<searchEvery>64</searchEvery>\n<learnerSchedule>duringNextRollouts</learnerSchedule>")
                 .find("bad.xml:3: <learnerSchedule>duringNextRollouts</learnerSchedule> needs <searchEvery> 0"),
+            std::string::npos);
+  EXPECT_NE(bad("<actorTrainsOnly>splitIn</actorTrainsOnly>\n<heldActions>splitOut</heldActions>")
+                .find("bad.xml:3: <heldActions> and <actorTrainsOnly>: give one"),
+            std::string::npos);
+  EXPECT_NE(bad("<heldActions>splitIn splitUp</heldActions>").find("bad.xml:2: <heldActions> names meshing parameters"),
             std::string::npos);
   EXPECT_NE(bad("<learnerSchedule>overlapped</learnerSchedule>")
                 .find("<learnerSchedule> is 'afterRollouts' or 'duringNextRollouts', not 'overlapped'"),

@@ -499,3 +499,27 @@ TEST(PolicyTrainer, ABatchBuiltButNotLearntIsLearntFirstWhenStartedUnderTheOther
               std::string::npos) << e.what();
   }
 }
+
+// <heldActions>: the held actions are the start action's in every episode (no noise) and
+// in the trained actor for every state; the others explore and learn.
+TEST(PolicyTrainer, HeldActionsKeepTheStartActionInEveryEpisodeAndState) {
+  const ToyEnvironment toy(24, 8, 3);
+  ThreadRollouts rollouts(1);
+  PolicyTrainOptions o = smallRun(160);
+  o.heldActions = {6, 7};
+  PolicyTrainer trainer(o, toy, rollouts);
+  const PolicyBatch startActions = trainer.learner().act(PolicyBatch::Zero(1, 24));
+  ASSERT_TRUE(trainer.run(nullptr, {}));
+  PolicyBatch s, a;
+  Eigen::VectorXd r;
+  trainer.buffer().exportEpisodes(s, a, r);
+  ASSERT_EQ(a.rows(), 160);
+  for (Eigen::Index i = 0; i < a.rows(); ++i) {
+    EXPECT_EQ(a(i, 6), startActions(0, 6));
+    EXPECT_EQ(a(i, 7), startActions(0, 7));
+  }
+  EXPECT_GT((a.col(0).array() - a(0, 0)).abs().maxCoeff(), 0.1);  // explored
+  const PolicyBatch after = trainer.learner().act(s.topRows(20));
+  for (Eigen::Index i = 0; i < after.rows(); ++i) EXPECT_EQ(after(i, 7), startActions(0, 7));
+  EXPECT_NE(trainer.learner().act(PolicyBatch::Zero(1, 24))(0, 0), startActions(0, 0));  // learnt
+}

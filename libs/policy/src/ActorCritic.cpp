@@ -51,6 +51,7 @@ struct ActorCritic::Networks {
   torch::optim::Adam actorOptimizer;
   torch::optim::Adam criticOptimizer;
   std::vector<int> trainedActorOutputs;  // empty: all (trainActorOutputsOnly)
+  std::vector<int> heldActorOutputs;     // (holdActorOutputs)
   FullyConnected validity{nullptr};  // the logit of p(s, a) (hasValidity(layout.critic))
   std::unique_ptr<torch::optim::Adam> validityOptimizer;
 };
@@ -70,12 +71,26 @@ ActorCritic& ActorCritic::operator=(ActorCritic&&) noexcept = default;
 
 const NetworkLayout& ActorCritic::layout() const { return networks_->layout; }
 
-void ActorCritic::trainActorOutputsOnly(const std::vector<int>& outputs) {
+namespace {
+
+void checkActorOutputs(const std::vector<int>& outputs, int actionSize) {
   for (int o : outputs)
-    if (o < 0 || o >= networks_->layout.actionSize)
+    if (o < 0 || o >= actionSize)
       throw std::invalid_argument("the actor has no output " + std::to_string(o) + " (it has " +
-                                  std::to_string(networks_->layout.actionSize) + ")");
+                                  std::to_string(actionSize) + ")");
+}
+
+}  // namespace
+
+void ActorCritic::trainActorOutputsOnly(const std::vector<int>& outputs) {
+  checkActorOutputs(outputs, networks_->layout.actionSize);
   networks_->trainedActorOutputs = outputs;
+}
+
+void ActorCritic::holdActorOutputs(const std::vector<int>& outputs) {
+  checkActorOutputs(outputs, networks_->layout.actionSize);
+  networks_->actor->makeOutputsConstant(outputs);
+  networks_->heldActorOutputs = outputs;
 }
 
 PolicyBatch ActorCritic::act(const PolicyBatch& states) const {
@@ -152,6 +167,7 @@ double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty, 
   }
   loss.backward();
   if (!n.trainedActorOutputs.empty()) n.actor->keepOutputGradients(n.trainedActorOutputs);
+  if (!n.heldActorOutputs.empty()) n.actor->dropOutputGradients(n.heldActorOutputs);
   n.actorOptimizer.step();
   // The backward pass also left gradients in the critic (and validity); their own steps
   // clear them first.

@@ -76,6 +76,23 @@ void FullyConnectedImpl::keepOutputGradients(const std::vector<int>& outputs) {
   }
 }
 
+void FullyConnectedImpl::makeOutputsConstant(const std::vector<int>& outputs) {
+  torch::NoGradGuard noGrad;
+  auto all = parameters();
+  torch::Tensor& weight = all[all.size() - 2];  // the output layer's weight, then its bias
+  for (int o : outputs) weight[o].zero_();
+}
+
+void FullyConnectedImpl::dropOutputGradients(const std::vector<int>& outputs) {
+  torch::NoGradGuard noGrad;
+  auto all = parameters();
+  for (std::size_t k = all.size() - 2; k < all.size(); ++k) {
+    torch::Tensor& grad = all[k].mutable_grad();
+    if (!grad.defined()) continue;
+    for (int o : outputs) grad[o].zero_();
+  }
+}
+
 FullyConnected makeActor(const NetworkLayout& layout) {
   return FullyConnected(layout.stateSize, layout.hidden, layout.actionSize, layout.leakySlope, true);
 }

@@ -216,6 +216,8 @@ const std::vector<Key>& keys() {
       {"actorUpdatesFrom", readInteger("actorUpdatesFrom", &O::actorUpdatesFrom, 0), [](const O& o) { return std::to_string(o.actorUpdatesFrom); }},
       {"actorTrainsOnly", readActionNames("actorTrainsOnly", &O::actorTrainedActions),
        [](const O& o) { return actionNamesText(o.actorTrainedActions); }},
+      {"heldActions", readActionNames("heldActions", &O::heldActions),
+       [](const O& o) { return actionNamesText(o.heldActions); }},
       {"actionBoundPenalty", readPositive("actionBoundPenalty", [](O& o) -> double& { return o.actionBoundPenalty; }, true),
        [](const O& o) { return formatExact(o.actionBoundPenalty); }},
       {"noiseStartSigma", readPositive("noiseStartSigma", [](O& o) -> double& { return o.noiseStartSigma; }, true),
@@ -316,6 +318,10 @@ PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file) {
     throw InputError(file.string(), dict.line("imitationWeight"),
                      "<imitationWeight> needs <searchEvery> above 0: without searches there are no "
                      "demonstrations to imitate");
+  if (!options.heldActions.empty() && !options.actorTrainedActions.empty())
+    throw InputError(file.string(), dict.line("heldActions"),
+                     "<heldActions> and <actorTrainsOnly>: give one (<actorTrainsOnly> already holds every "
+                     "action it does not name)");
   if (options.learnerSchedule == LearnerSchedule::duringNextRollouts && options.searchEvery > 0)
     throw InputError(file.string(), dict.line("learnerSchedule"),
                      "<learnerSchedule>duringNextRollouts</learnerSchedule> needs <searchEvery> 0: a search "

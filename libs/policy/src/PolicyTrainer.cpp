@@ -113,6 +113,7 @@ PolicyTrainer::PolicyTrainer(const PolicyTrainOptions& options, const PolicyEnvi
       bestValidation_(-std::numeric_limits<double>::infinity()),
       start_(std::chrono::steady_clock::now()) {
   learner_.trainActorOutputsOnly(options_.actorTrainedActions);  // empty: every weight learns
+  learner_.holdActorOutputs(options_.heldActions);              // empty: none held
   if (options_.learnerSchedule == LearnerSchedule::duringNextRollouts && options_.searchEvery > 0)
     throw std::invalid_argument("learnerSchedule duringNextRollouts needs searchEvery 0");
   for (int i = 0; i < options_.validationPassages; ++i)
@@ -240,9 +241,12 @@ void PolicyTrainer::runBatch() {
     // (drawn only when asked for, so that runs without wide episodes keep their noise)
     const bool wide = options_.wideNoiseShare > 0 && uniform01(noise) < options_.wideNoiseShare;
     const auto& widened = options_.wideNoiseActions;
+    const auto& held = options_.heldActions;
     for (int k = 0; k < actions.cols(); ++k) {
       const bool widen = wide && (widened.empty() || std::find(widened.begin(), widened.end(), k) != widened.end());
-      actions(i, k) = std::clamp(actions(i, k) + (widen ? options_.wideNoiseSigma : sigma) * standardNormal(noise), -1.0, 1.0);
+      // (drawn for a held action too, so that the others' noise is that of a run without it)
+      const double step = (widen ? options_.wideNoiseSigma : sigma) * standardNormal(noise);
+      if (std::find(held.begin(), held.end(), k) == held.end()) actions(i, k) = std::clamp(actions(i, k) + step, -1.0, 1.0);
     }
   }
   const EpisodeRange range{options_.seed, static_cast<std::uint64_t>(first)};
@@ -466,6 +470,7 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
     torch::serialize::InputArchive networks;
     archive.read("networks", networks);
     learner_.load(networks);  // last: it can fail too, and then the run ends anyway
+    learner_.holdActorOutputs(options_.heldActions);  // (a no-op on a checkpoint of this run)
 
     const auto c = counters.accessor<double, 1>();
     episode_ = static_cast<long>(c[0]);
@@ -503,6 +508,7 @@ void PolicyTrainer::startActorFrom(const Policy& policy, const PolicyStateScalin
     throw InputError(file, 0, "the policy scales the state otherwise than this run (<edgeRadii>, etc/bladeParameterRange.xml)");
   try {
     learner_.startActorFrom(policy.actorFile(), policy.layout());
+    learner_.holdActorOutputs(options_.heldActions);
   } catch (const std::invalid_argument& e) {
     throw InputError(file, 0, e.what());
   }

@@ -56,6 +56,13 @@ class ActorCritic {
   // trained ones stay as they were (docs/policy.md "Ten actions"). Throws
   // std::invalid_argument for an output outside the actor's.
   void trainActorOutputsOnly(const std::vector<int>& outputs);
+  // Holds these outputs where they are for every state: their rows of the actor's output
+  // layer get zero weights now (each output is then its bias through the tanh: the start
+  // action's value after a start at it) and never move, while every other weight learns
+  // (empty: none held). For a policy trained without some actions, e.g. the method's eight
+  // with the interface splits held at 0 (PolicyTrainOptions::heldActions). Throws
+  // std::invalid_argument for an output outside the actor's.
+  void holdActorOutputs(const std::vector<int>& outputs);
 
   // pi(s) for each row of `states`.
   PolicyBatch act(const PolicyBatch& states) const;

@@ -34,6 +34,13 @@ class FullyConnectedImpl : public torch::nn::Module {
   // optimiser then leaves them as they are) and zeroes the output layer's gradient rows of
   // the outputs not listed, so that a step moves only the listed outputs' rows.
   void keepOutputGradients(const std::vector<int>& outputs);
+  // Zeroes the listed outputs' rows of the output layer's weights, so that each of them is
+  // its bias (through the tanh) for every input.
+  void makeOutputsConstant(const std::vector<int>& outputs);
+  // After a backward pass: zeroes the output layer's gradient rows of the listed outputs (an
+  // Adam step then leaves those rows as they are, bit for bit, while its moments for them
+  // stay zero), every other weight keeping its gradient.
+  void dropOutputGradients(const std::vector<int>& outputs);
 
  private:
   torch::nn::Sequential layers_;

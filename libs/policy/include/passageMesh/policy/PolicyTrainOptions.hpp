@@ -45,6 +45,13 @@ struct PolicyTrainOptions {
   // learns (the paper's). For a start from a trained policy without these actions
   // (policyTrain -actorFrom; ActorCritic::trainActorOutputsOnly, docs/policy.md).
   std::vector<int> actorTrainedActions;
+  // The actions the actor holds at its start for every state (indices; the dictionary names
+  // them: <heldActions>splitIn splitOut</heldActions>): their output rows get zero weights
+  // and never learn, and they get no exploration noise, while every other weight learns.
+  // With actorStart defaults the splits are then 0, the method's outer loop: a policy of the
+  // method's eight actions (those before 2026-12-06) trained with today's ten-action layout.
+  // Empty: none (the paper's). Not with actorTrainedActions.
+  std::vector<int> heldActions;
   // Weight of the actor's penalty on pre-tanh outputs beyond atanh(0.95), the action at
   // 95 % of its half-range (0: none, the paper's): keeps tanh off its flat ends, where the
   // actor's gradient vanishes and a saturated action cannot come back (docs/policy.md).
