@@ -67,13 +67,10 @@ void FullyConnectedImpl::keepOutputGradients(const std::vector<int>& outputs) {
   auto all = parameters();
   const std::size_t outputLayer = all.size() - 2;  // its weight, then its bias
   for (std::size_t k = 0; k < outputLayer; ++k) all[k].mutable_grad() = torch::Tensor();
-  const long rows = all[outputLayer].size(0);
-  torch::Tensor keep = torch::zeros({rows}, all[outputLayer].options());
-  for (int o : outputs) keep[o] = 1.0;
-  for (std::size_t k = outputLayer; k < all.size(); ++k) {
-    torch::Tensor& grad = all[k].mutable_grad();
-    if (grad.defined()) grad.mul_(all[k].dim() == 2 ? keep.unsqueeze(1) : keep);
-  }
+  std::vector<int> others;
+  for (int o = 0; o < all[outputLayer].size(0); ++o)
+    if (std::find(outputs.begin(), outputs.end(), o) == outputs.end()) others.push_back(o);
+  dropOutputGradients(others);
 }
 
 void FullyConnectedImpl::makeOutputsConstant(const std::vector<int>& outputs) {

@@ -114,8 +114,6 @@ PolicyTrainer::PolicyTrainer(const PolicyTrainOptions& options, const PolicyEnvi
       start_(std::chrono::steady_clock::now()) {
   learner_.trainActorOutputsOnly(options_.actorTrainedActions);  // empty: every weight learns
   learner_.holdActorOutputs(options_.heldActions);              // empty: none held
-  if (options_.learnerSchedule == LearnerSchedule::duringNextRollouts && options_.searchEvery > 0)
-    throw std::invalid_argument("learnerSchedule duringNextRollouts needs searchEvery 0");
   for (int i = 0; i < options_.validationPassages; ++i)
     validationTasks_.push_back(
         environment_.draw(options_.validationSeed, static_cast<std::uint64_t>(i), EpisodePurpose::validation));
@@ -462,7 +460,8 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
     for (long i = 0; i < validation.size(0); ++i)
       validationRecords.push_back(ValidationRecord{static_cast<long>(v[i][0]), v[i][1], v[i][2],
                                                    static_cast<int>(v[i][3]), static_cast<int>(v[i][4])});
-    const long learnt = static_cast<long>(counters[0].item<double>());
+    const auto c = counters.accessor<double, 1>();
+    const long learnt = static_cast<long>(c[0]);
     if (pending.actions.rows() > 0 && learnt + pending.actions.rows() > options_.episodes)
       throw InputError(name, 0, "the checkpoint has built " + std::to_string(learnt + pending.actions.rows()) +
                                     " episodes (" + std::to_string(learnt) + " learnt): ask for at least that many "
@@ -472,8 +471,7 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
     learner_.load(networks);  // last: it can fail too, and then the run ends anyway
     learner_.holdActorOutputs(options_.heldActions);  // (a no-op on a checkpoint of this run)
 
-    const auto c = counters.accessor<double, 1>();
-    episode_ = static_cast<long>(c[0]);
+    episode_ = learnt;
     bestValidation_ = c[1];
     lossSum_ = c[2];
     lossCount_ = static_cast<long>(c[3]);
