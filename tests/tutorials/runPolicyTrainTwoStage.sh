@@ -80,5 +80,7 @@ cmp -s "$straight/policy/final.pt" "$chosen/policy/final.pt" || fail "the tourna
 grep -q "stage 1 is stage1-seed$expected" "$work/tour2.out" || { cat "$work/tour2.out"; fail "a plain Allrun forgot the tournament"; }
 [ "$(grep -c "has finished" "$work/tour2.out")" = 3 ] || { cat "$work/tour2.out"; fail "a finished stage of the tournament ran again"; }
 "$tour/Allrun" -seeds "1 3" > "$work/tour3.out" 2>&1 && fail "another tournament in the same case was not refused"
+"$tour/Allrun" -seeds "1 2" -trial 96 > "$work/tour4.out" 2>&1 && fail "a trial as long as stage 1 was not refused"
+grep -q "below stage 1's 96" "$work/tour4.out" || { cat "$work/tour4.out"; fail "no clear error for a trial as long as stage 1"; }
 echo "runPolicyTrainTwoStage: three stages in order, finished ones kept, a stopped one resumed; the tournament" \
   "chose the better seed, whose weights are a straight run's"
