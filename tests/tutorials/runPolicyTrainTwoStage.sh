@@ -11,17 +11,20 @@ set -euo pipefail
 . "$(dirname "$0")/tutorialWorkspace.sh" "$1" "$2"
 copyTutorial policyTrainTwoStage
 case="$work/tutorials/policyTrainTwoStage"
-shrink() {  # shrink STAGE EPISODES [CASE]: a few batches, validation on 4 passages every batch
+shrink() {  # shrink STAGE EPISODES CASE: a few batches, validation on 4 passages every batch
   sed -i -e "s#<episodes>[0-9]*</episodes>#<episodes>$2</episodes>#" \
     -e "s#<validationEvery>[0-9]*</validationEvery>#<validationEvery>32</validationEvery>#" \
     -e "s#<validationPassages>[0-9]*</validationPassages>#<validationPassages>4</validationPassages>#" \
     -e "s#<checkpointEvery>[0-9]*</checkpointEvery>#<checkpointEvery>32</checkpointEvery>#" \
     -e "s#<actorUpdatesFrom>[0-9]*</actorUpdatesFrom>#<actorUpdatesFrom>32</actorUpdatesFrom>#" \
-    "${3:-$case}/$1/system/policyTrainDict.xml"
+    "$3/$1/system/policyTrainDict.xml"
 }
-shrink stage1 96
-shrink stage2A 64
-shrink stage2B 128
+shrinkStages() {  # shrinkStages CASE: stage 1 96 episodes, A 64, B on to 128
+  shrink stage1 96 "$1"
+  shrink stage2A 64 "$1"
+  shrink stage2B 128 "$1"
+}
+shrinkStages "$case"
 fail() { echo "runPolicyTrainTwoStage: $*"; exit 1; }
 
 "$case/Allrun" > "$work/first.out" 2>&1 || { cat "$work/first.out"; fail "Allrun failed"; }
@@ -53,9 +56,7 @@ grep -q "resumed at episode 128" "$case/stage2B/log.policyTrain" || fail "stage 
 # The tournament of seeds.
 tour="$work/tutorials/tournament"
 cp -r "$sourceDir/tutorials/policyTrainTwoStage" "$tour" && (cd "$tour" && ./Allclean > /dev/null) || fail "no copy for the tournament"
-shrink stage1 96 "$tour"
-shrink stage2A 64 "$tour"
-shrink stage2B 128 "$tour"
+shrinkStages "$tour"
 "$tour/Allrun" -seeds "1 2" -trial 64 > "$work/tour.out" 2>&1 || { cat "$work/tour.out"; fail "Allrun -seeds failed"; }
 scores="$(sed -n 's#^Allrun: seed \([0-9]*\), best validation \([^ ]*\) at 64 episodes$#\2 \1#p' "$work/tour.out")"
 [ "$(echo "$scores" | wc -l)" = 2 ] || { cat "$work/tour.out"; fail "the tournament did not score both seeds"; }
