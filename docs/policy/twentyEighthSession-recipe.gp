@@ -1,5 +1,5 @@
 # The shipped member's two-stage recipe run again with today's code (docs/policy.md "The
-# two-stage recipe again", "Seeds ranked early"): gnuplot docs/policy/twentyEighthSession-recipe.gp (from the
+# two-stage recipe in one command"; the runs in docs/policy-history.md): gnuplot docs/policy/twentyEighthSession-recipe.gp (from the
 # repository root). Stage 2's episodes are drawn after stage 1's 124736.
 set terminal pngcairo size 1000,560 font ",11"
 set output 'docs/policy/twentyEighthSession-recipe.png'
