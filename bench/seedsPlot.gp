@@ -1,5 +1,5 @@
 # docs/policy/seeds.png: the validation curves of three training seeds of the shipped dict
-# (docs/policy.md "Three training seeds"). Run from the repository root:
+# (docs/policy-history.md "Three training seeds"). Run from the repository root:
 #   gnuplot bench/seedsPlot.gp
 # Seed 1 is the shipped run (docs/policy/validation.csv); seeds 2 and 3 ran the same dict
 # (tutorials/policyTrain) with <seed> 2 or 3 and <episodes>40000</episodes>.

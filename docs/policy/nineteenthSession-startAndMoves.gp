@@ -1,4 +1,4 @@
-# Validation mean of six retraining runs on the mesher of the seventeenth session (docs/policy.md
+# Validation mean of six retraining runs on the mesher of the seventeenth session (docs/policy-history.md
 # "Retraining on this mesher"): where the actor starts and what the mesher's parameter moves
 # aim at in training. Run from docs/policy: gnuplot nineteenthSession-startAndMoves.gp
 set terminal pngcairo size 1000,600
