@@ -136,6 +136,13 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
   events.newBestValidation = [&](const PolicyTrainer& t) {
     writePolicyFiles(paths.policy, t.learner(), environment.stateScaling(), PolicyProvenance{t.episode(), t.bestValidation(), command});
   };
+  events.learnerRestored = [&](const PolicyTrainer& t) {
+    const ValidationRecord& v = t.validationCurve().back();
+    std::printf("policyTrain: validation at episode %ld meshed %d of %d passages: the learner goes back to its state "
+                "at the best validation (%.17g), restore %zu\n",
+                t.episode(), v.valid, v.passages, t.bestValidation(), t.restores().size());
+    std::fflush(stdout);
+  };
   events.checkpointDue = [&](const PolicyTrainer& t) {
     t.saveCheckpoint(paths.checkpoint);
     writeLearningCurves(paths, t, &warnings, baseline);

@@ -220,6 +220,9 @@ const std::vector<Key>& keys() {
        [](const O& o) { return actionNamesText(o.heldActions); }},
       {"actionBoundPenalty", readPositive("actionBoundPenalty", [](O& o) -> double& { return o.actionBoundPenalty; }, true),
        [](const O& o) { return formatExact(o.actionBoundPenalty); }},
+      {"restoreBelowValidShare",
+       readPositive("restoreBelowValidShare", [](O& o) -> double& { return o.restoreBelowValidShare; }, true),
+       [](const O& o) { return formatExact(o.restoreBelowValidShare); }},
       {"noiseStartSigma", readPositive("noiseStartSigma", [](O& o) -> double& { return o.noiseStartSigma; }, true),
        [](const O& o) { return formatExact(o.noiseStartSigma); }},
       {"noiseStartEpisodes", readInteger("noiseStartEpisodes", &O::noiseStartEpisodes, 0), [](const O& o) { return std::to_string(o.noiseStartEpisodes); }},
@@ -326,6 +329,10 @@ PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file) {
     throw InputError(file.string(), dict.line("learnerSchedule"),
                      "<learnerSchedule>duringNextRollouts</learnerSchedule> needs <searchEvery> 0: a search "
                      "uses the rollouts and the actor between two batches");
+  if (options.restoreBelowValidShare > 1)
+    throw InputError(file.string(), dict.line("restoreBelowValidShare"),
+                     "<restoreBelowValidShare> is a share of the best validation's valid meshes: expected a value in "
+                     "[0, 1], got " + formatExact(options.restoreBelowValidShare));
   if (options.wideNoiseShare > 1)
     throw InputError(file.string(), dict.line("wideNoiseShare"),
                      "<wideNoiseShare> is a share of the episodes: expected a value in [0, 1], got " +

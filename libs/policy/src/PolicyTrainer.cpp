@@ -69,6 +69,23 @@ EpisodeRange validationRange(const PolicyTrainOptions& options) {
   return {options.validationSeed, 0, 1, EpisodePurpose::validation};
 }
 
+// The learner's whole state (networks and optimisers) as bytes, and back: the state at the
+// best validation, which a collapse goes back to (PolicyTrainOptions::restoreBelowValidShare).
+std::string learnerState(const ActorCritic& learner) {
+  torch::serialize::OutputArchive archive;
+  learner.save(archive);
+  std::ostringstream bytes;
+  archive.save_to(bytes);
+  return bytes.str();
+}
+
+void loadLearnerState(ActorCritic& learner, const std::string& state) {
+  std::istringstream bytes(state);
+  torch::serialize::InputArchive archive;
+  archive.load_from(bytes);
+  learner.load(archive);
+}
+
 // The validation summary of one set of rewards.
 ValidationRecord validationRecord(long episode, const std::vector<double>& rewards) {
   const RewardSummary summary = summarizeRewards(rewards);
@@ -295,10 +312,20 @@ bool PolicyTrainer::run(const std::atomic<bool>* stop, const Events& events) {
     const auto due = [&](long every) { return done || episode_ / every > before / every; };
     if (due(options_.validationEvery)) {
       validate();
-      if (!validation_.empty() && validation_.back().episode == episode_ &&
-          validation_.back().meanReward > bestValidation_) {
-        bestValidation_ = validation_.back().meanReward;
-        if (events.newBestValidation) events.newBestValidation(*this);
+      if (!validation_.empty() && validation_.back().episode == episode_) {
+        const ValidationRecord& latest = validation_.back();
+        if (latest.meanReward > bestValidation_) {
+          bestValidation_ = latest.meanReward;
+          bestValid_ = latest.valid;
+          if (options_.restoreBelowValidShare > 0) bestLearnerState_ = learnerState(learner_);
+          if (events.newBestValidation) events.newBestValidation(*this);
+        } else if (!bestLearnerState_.empty() && latest.valid < options_.restoreBelowValidShare * bestValid_) {
+          // A collapse (docs/policy.md "Collapses"): back to the best validation's learner.
+          loadLearnerState(learner_, bestLearnerState_);
+          learner_.holdActorOutputs(options_.heldActions);  // (a no-op: the state holds them)
+          restores_.push_back(episode_);
+          if (events.learnerRestored) events.learnerRestored(*this);
+        }
       }
     }
     if (events.afterBatch) events.afterBatch(*this);
@@ -350,6 +377,14 @@ void PolicyTrainer::saveCheckpoint(const std::filesystem::path& file) const {
   torch::serialize::OutputArchive networks;
   learner_.save(networks);
   archive.write("networks", networks);
+  if (!bestLearnerState_.empty()) {
+    archive.write("bestLearner", torch::from_blob(const_cast<char*>(bestLearnerState_.data()),
+                                                  {static_cast<long>(bestLearnerState_.size())}, torch::kUInt8)
+                                     .clone());
+    archive.write("bestValid", torch::tensor(at::ArrayRef<double>{static_cast<double>(bestValid_)}, torch::kFloat64));
+  }
+  std::vector<double> restores(restores_.begin(), restores_.end());
+  archive.write("restores", torch::tensor(at::ArrayRef<double>(restores), torch::kFloat64));
   saveArchiveAtomically(archive, file);
 }
 
@@ -466,6 +501,27 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
       throw InputError(name, 0, "the checkpoint has built " + std::to_string(learnt + pending.actions.rows()) +
                                     " episodes (" + std::to_string(learnt) + " learnt): ask for at least that many "
                                     "<episodes>, not " + std::to_string(options_.episodes));
+    // The learner at the best validation and the restores so far (absent in checkpoints
+    // written before restoreBelowValidShare existed).
+    std::string bestState;
+    int bestValid = 0;
+    torch::Tensor bestTensor, bestValidTensor, restoresTensor;
+    if (archive.try_read("bestLearner", bestTensor)) {
+      archive.read("bestValid", bestValidTensor);
+      if (bestTensor.scalar_type() != torch::kUInt8 || bestTensor.dim() != 1 ||
+          bestValidTensor.scalar_type() != torch::kFloat64 || bestValidTensor.numel() != 1)
+        throw corrupt("the best validation's learner has the wrong shape or type");
+      const auto* bytes = static_cast<const char*>(bestTensor.contiguous().data_ptr());
+      bestState.assign(bytes, bytes + bestTensor.size(0));
+      bestValid = static_cast<int>(bestValidTensor.item<double>());
+    }
+    std::vector<long> restoreEpisodes;
+    if (archive.try_read("restores", restoresTensor)) {
+      if (restoresTensor.scalar_type() != torch::kFloat64 || restoresTensor.dim() != 1)
+        throw corrupt("the restores have the wrong shape or type");
+      const auto r = restoresTensor.accessor<double, 1>();
+      for (long i = 0; i < restoresTensor.size(0); ++i) restoreEpisodes.push_back(static_cast<long>(r[i]));
+    }
     torch::serialize::InputArchive networks;
     archive.read("networks", networks);
     learner_.load(networks);  // last: it can fail too, and then the run ends anyway
@@ -487,6 +543,9 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
     recentRewards_ = std::move(recent);
     learning_ = std::move(learningRecords);
     validation_ = std::move(validationRecords);
+    bestLearnerState_ = std::move(bestState);
+    bestValid_ = bestValid;
+    restores_ = std::move(restoreEpisodes);
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {

@@ -56,6 +56,12 @@ struct PolicyTrainOptions {
   // 95 % of its half-range (0: none, the paper's): keeps tanh off its flat ends, where the
   // actor's gradient vanishes and a saturated action cannot come back (docs/policy.md).
   double actionBoundPenalty = 0;
+  // A validation that meshes fewer than this share of the passages the best validation so
+  // far meshed takes the learner (networks and optimisers) back to its state at that best,
+  // and training goes on from there with the buffer as it is (0: never, the paper's). A
+  // collapsed actor, every action on a bound where tanh is flat, does not come back by
+  // itself (docs/policy.md "Collapses"); a run without such a validation is unchanged.
+  double restoreBelowValidShare = 0.5;
   // Exploration noise on the actions (scaled units): sigma = noiseStartSigma for the first
   // noiseStartEpisodes, then noiseAmplitude (cos(2 pi episode / noisePeriod) + 1)
   // (paper: 1, 1000, 0.25, 1000).

@@ -18,6 +18,7 @@
 #include <functional>
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "passageMesh/policy/ActorCritic.hpp"
@@ -73,6 +74,7 @@ class PolicyTrainer {
   struct Events {
     std::function<void(const PolicyTrainer&)> afterBatch;        // progress lines
     std::function<void(const PolicyTrainer&)> newBestValidation;  // save the policy
+    std::function<void(const PolicyTrainer&)> learnerRestored;    // a collapse was undone (restores())
     std::function<void(const PolicyTrainer&)> checkpointDue;      // save a checkpoint
   };
   // Trains until options.episodes or until *stop is set (checked between batches).
@@ -112,6 +114,9 @@ class PolicyTrainer {
   ValidationRecord validateCurrentPolicy() const;
   // Best validation mean reward so far (-infinity before the first).
   double bestValidation() const { return bestValidation_; }
+  // The episodes at which a validation below options.restoreBelowValidShare of the best's
+  // valid meshes took the learner back to its state at the best validation.
+  const std::vector<long>& restores() const { return restores_; }
   double secondsTrained() const;  // this run's time plus that of the runs before a resume
 
  private:
@@ -144,6 +149,9 @@ class PolicyTrainer {
   std::vector<LearningRecord> learning_;
   std::vector<ValidationRecord> validation_;
   double bestValidation_;
+  int bestValid_ = 0;              // valid meshes of the best validation
+  std::string bestLearnerState_;   // the learner then (empty: restores off, or no best yet)
+  std::vector<long> restores_;     // episodes at which a collapse took the learner back
   double lossSum_ = 0;
   long lossCount_ = 0;
   double secondsBefore_ = 0;  // from the checkpoint
