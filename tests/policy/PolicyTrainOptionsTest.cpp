@@ -22,6 +22,7 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   o.imitationWeight = 0.25;
   o.wideNoiseShare = 0.1;
   o.wideNoiseSigma = 0.4;
+  o.restoreBelowValidShare = 0.25;
   o.actorUpdatesFrom = 8000;
   o.actorTrainedActions = {9, 8};
   o.wideNoiseActions = {5};
@@ -37,6 +38,7 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   EXPECT_EQ(back.searchBudget, 96);
   EXPECT_EQ(back.imitationWeight, 0.25);
   EXPECT_EQ(back.wideNoiseShare, 0.1);
+  EXPECT_EQ(back.restoreBelowValidShare, 0.25);
   EXPECT_EQ(back.wideNoiseSigma, 0.4);
   EXPECT_EQ(back.actorUpdatesFrom, 8000);
   EXPECT_EQ(back.actorTrainedActions, (std::vector<int>{9, 8}));
@@ -107,6 +109,9 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
   EXPECT_NE(bad("<searchBudget>1</searchBudget>").find("must be in [2,"), std::string::npos);
   EXPECT_NE(bad("<wideNoiseShare>1.5</wideNoiseShare>").find("bad.xml:2: <wideNoiseShare> is a share of the episodes"),
             std::string::npos) << bad("<wideNoiseShare>1.5</wideNoiseShare>");
+  EXPECT_NE(bad("<restoreBelowValidShare>2</restoreBelowValidShare>")
+                .find("bad.xml:2: <restoreBelowValidShare> is a share of the best validation's valid meshes"),
+            std::string::npos) << bad("<restoreBelowValidShare>2</restoreBelowValidShare>");
   EXPECT_NE(bad("<wideNoiseSigma>0</wideNoiseSigma>").find("bad.xml:2:"), std::string::npos);
   EXPECT_NE(bad("<actorTrainsOnly>splitIn splitUp</actorTrainsOnly>")
                 .find("bad.xml:2: <actorTrainsOnly> names meshing parameters, each once (yIn yOut alphaCamber"),

@@ -85,7 +85,7 @@ TEST(PolicyTrainerCollapse, AValidationWithTooFewValidMeshesTakesTheLearnerBackT
 TEST(PolicyTrainerCollapse, ACheckpointKeepsTheBestValidationsLearnerForTheRestore) {
   const ToyEnvironment toy(24, 8, 3);
   PolicyTrainOptions run = smallRun(400);
-  run.checkpointEvery = 256;  // after the best validation (100 or 200), before the break is seen
+  run.checkpointEvery = 256;  // after the best validation (112 or 208), before the break is seen
   ThreadRollouts rollouts(1);
   const auto breakAt = [](BreakableToy& environment) {
     return [&environment](const PolicyTrainer& t) {
