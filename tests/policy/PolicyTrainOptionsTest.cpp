@@ -23,6 +23,7 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   o.wideNoiseShare = 0.1;
   o.wideNoiseSigma = 0.4;
   o.restoreBelowValidShare = 0.25;
+  o.actorAverageDecay = 0.999;
   o.actorUpdatesFrom = 8000;
   o.actorTrainedActions = {9, 8};
   o.wideNoiseActions = {5};
@@ -39,6 +40,7 @@ TEST(PolicyTrainOptions, TheWrittenDictionaryReadsBackToTheSameOptions) {
   EXPECT_EQ(back.imitationWeight, 0.25);
   EXPECT_EQ(back.wideNoiseShare, 0.1);
   EXPECT_EQ(back.restoreBelowValidShare, 0.25);
+  EXPECT_EQ(back.actorAverageDecay, 0.999);
   EXPECT_EQ(back.wideNoiseSigma, 0.4);
   EXPECT_EQ(back.actorUpdatesFrom, 8000);
   EXPECT_EQ(back.actorTrainedActions, (std::vector<int>{9, 8}));
@@ -112,6 +114,9 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
   EXPECT_NE(bad("<restoreBelowValidShare>2</restoreBelowValidShare>")
                 .find("bad.xml:2: <restoreBelowValidShare> is a share of the best validation's valid meshes"),
             std::string::npos) << bad("<restoreBelowValidShare>2</restoreBelowValidShare>");
+  EXPECT_NE(bad("<actorAverageDecay>1</actorAverageDecay>")
+                .find("bad.xml:2: <actorAverageDecay> is the share of the averaged actor kept at each actor step"),
+            std::string::npos) << bad("<actorAverageDecay>1</actorAverageDecay>");
   EXPECT_NE(bad("<wideNoiseSigma>0</wideNoiseSigma>").find("bad.xml:2:"), std::string::npos);
   EXPECT_NE(bad("<actorTrainsOnly>splitIn splitUp</actorTrainsOnly>")
                 .find("bad.xml:2: <actorTrainsOnly> names meshing parameters, each once (yIn yOut alphaCamber"),

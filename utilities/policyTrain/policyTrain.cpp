@@ -108,6 +108,9 @@ int train(const CommandLine& cli, const std::string& command, RolloutEvaluator& 
   std::printf("policyTrain: %ld episodes in batches of %d, networks %s, seed %llu, %s\n", options.episodes,
               options.batchEpisodes, NetworkLayout{0, 0, options.hidden, options.leakySlope}.hiddenText().c_str(),
               static_cast<unsigned long long>(options.seed), rollouts.description().c_str());
+  if (options.actorAverageDecay > 0)
+    std::printf("policyTrain: the validations and the policy files are the averaged actor's (actorAverageDecay "
+                "%.17g)\n", options.actorAverageDecay);
   std::fflush(stdout);
 
   // The baseline the policy must beat: the defaults' action on the validation passages.

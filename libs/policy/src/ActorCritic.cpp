@@ -54,6 +54,25 @@ struct ActorCritic::Networks {
   std::vector<int> heldActorOutputs;     // (holdActorOutputs)
   FullyConnected validity{nullptr};  // the logit of p(s, a) (hasValidity(layout.critic))
   std::unique_ptr<torch::optim::Adam> validityOptimizer;
+  FullyConnected averaged{nullptr};  // the Polyak-averaged actor (averageActor)
+  double averageDecay = 0;
+
+  // The averaged actor set to the actor's weights.
+  void restartAverage() {
+    torch::NoGradGuard noGrad;
+    const auto from = actor->parameters();
+    auto to = averaged->parameters();
+    for (std::size_t k = 0; k < to.size(); ++k) to[k].copy_(from[k]);
+  }
+  // One averaging step. Written as a + (1 - d)(p - a) so that a weight the actor no longer
+  // moves (a held output) stays bit for bit where it is.
+  void stepAverage() {
+    torch::NoGradGuard noGrad;
+    const auto from = actor->parameters();
+    auto to = averaged->parameters();
+    for (std::size_t k = 0; k < to.size(); ++k) to[k].add_((from[k] - to[k]) * (1.0 - averageDecay));
+  }
+  FullyConnected& delivered() { return averaged ? averaged : actor; }
 };
 
 ActorCritic::ActorCritic(const NetworkLayout& layout, const LearningRates& rates, std::uint64_t seed,
@@ -90,12 +109,37 @@ void ActorCritic::trainActorOutputsOnly(const std::vector<int>& outputs) {
 void ActorCritic::holdActorOutputs(const std::vector<int>& outputs) {
   checkActorOutputs(outputs, networks_->layout.actionSize);
   networks_->actor->makeOutputsConstant(outputs);
+  if (networks_->averaged) networks_->averaged->makeOutputsConstant(outputs);
   networks_->heldActorOutputs = outputs;
 }
+
+void ActorCritic::averageActor(double decay) {
+  if (!(decay > 0 && decay < 1))
+    throw std::invalid_argument("the actor's average keeps a share in (0, 1) at each step, not " +
+                                std::to_string(decay));
+  Networks& n = *networks_;
+  if (!n.averaged) {
+    // Built without touching LibTorch's generator (its first weights are overwritten at
+    // once): a run with averaging learns exactly as one without.
+    auto generator = at::detail::getDefaultCPUGenerator();  // (get_state and set_state lock it)
+    const torch::Tensor state = generator.get_state();
+    n.averaged = makeActor(n.layout);
+    generator.set_state(state);
+  }
+  n.averageDecay = decay;
+  n.restartAverage();
+}
+
+bool ActorCritic::averagesActor() const { return static_cast<bool>(networks_->averaged); }
 
 PolicyBatch ActorCritic::act(const PolicyBatch& states) const {
   torch::NoGradGuard noGrad;
   return batchOf(networks_->actor->forward(tensorOf(states)));
+}
+
+PolicyBatch ActorCritic::actDelivered(const PolicyBatch& states) const {
+  torch::NoGradGuard noGrad;
+  return batchOf(networks_->delivered()->forward(tensorOf(states)));
 }
 
 Eigen::VectorXd ActorCritic::value(const PolicyBatch& states, const PolicyBatch& actions) const {
@@ -169,6 +213,7 @@ double ActorCritic::updateActor(const PolicyBatch& states, double boundPenalty, 
   if (!n.trainedActorOutputs.empty()) n.actor->keepOutputGradients(n.trainedActorOutputs);
   if (!n.heldActorOutputs.empty()) n.actor->dropOutputGradients(n.heldActorOutputs);
   n.actorOptimizer.step();
+  if (n.averaged) n.stepAverage();
   // The backward pass also left gradients in the critic (and validity); their own steps
   // clear them first.
   return q.item<double>();
@@ -192,6 +237,11 @@ void ActorCritic::save(torch::serialize::OutputArchive& archive) const {
     archive.write("validity", validity);
     archive.write("validityOptimizer", validityOptimizer);
   }
+  if (n.averaged) {
+    torch::serialize::OutputArchive averaged;
+    n.averaged->save(averaged);
+    archive.write("averagedActor", averaged);
+  }
 }
 
 void ActorCritic::load(torch::serialize::InputArchive& archive) {
@@ -212,6 +262,13 @@ void ActorCritic::load(torch::serialize::InputArchive& archive) {
     n.validity->load(validity);
     n.validityOptimizer->load(validityOptimizer);
   }
+  if (n.averaged) {
+    torch::serialize::InputArchive averaged;
+    if (archive.try_read("averagedActor", averaged))
+      n.averaged->load(averaged);
+    else
+      n.restartAverage();
+  }
 }
 
 void ActorCritic::startActorFrom(const std::filesystem::path& actorFile, const NetworkLayout& fileLayout) {
@@ -227,10 +284,11 @@ void ActorCritic::startActorFrom(const std::filesystem::path& actorFile, const N
   archive.load_from(actorFile.string());
   start->load(archive);
   networks_->actor->startFrom(*start);
+  if (networks_->averaged) networks_->restartAverage();
 }
 
 void ActorCritic::saveActor(const std::filesystem::path& file) const {
-  saveModuleAtomically(*networks_->actor, file);
+  saveModuleAtomically(*networks_->delivered(), file);
 }
 
 }  // namespace passageMesh

@@ -223,6 +223,8 @@ const std::vector<Key>& keys() {
       {"restoreBelowValidShare",
        readPositive("restoreBelowValidShare", [](O& o) -> double& { return o.restoreBelowValidShare; }, true),
        [](const O& o) { return formatExact(o.restoreBelowValidShare); }},
+      {"actorAverageDecay", readPositive("actorAverageDecay", [](O& o) -> double& { return o.actorAverageDecay; }, true),
+       [](const O& o) { return formatExact(o.actorAverageDecay); }},
       {"noiseStartSigma", readPositive("noiseStartSigma", [](O& o) -> double& { return o.noiseStartSigma; }, true),
        [](const O& o) { return formatExact(o.noiseStartSigma); }},
       {"noiseStartEpisodes", readInteger("noiseStartEpisodes", &O::noiseStartEpisodes, 0), [](const O& o) { return std::to_string(o.noiseStartEpisodes); }},
@@ -333,6 +335,10 @@ PolicyTrainOptions readPolicyTrainDict(const std::filesystem::path& file) {
     throw InputError(file.string(), dict.line("restoreBelowValidShare"),
                      "<restoreBelowValidShare> is a share of the best validation's valid meshes: expected a value in "
                      "[0, 1], got " + formatExact(options.restoreBelowValidShare));
+  if (options.actorAverageDecay >= 1)
+    throw InputError(file.string(), dict.line("actorAverageDecay"),
+                     "<actorAverageDecay> is the share of the averaged actor kept at each actor step: expected a "
+                     "value in [0, 1), got " + formatExact(options.actorAverageDecay));
   if (options.wideNoiseShare > 1)
     throw InputError(file.string(), dict.line("wideNoiseShare"),
                      "<wideNoiseShare> is a share of the episodes: expected a value in [0, 1], got " +

@@ -131,6 +131,7 @@ PolicyTrainer::PolicyTrainer(const PolicyTrainOptions& options, const PolicyEnvi
       start_(std::chrono::steady_clock::now()) {
   learner_.trainActorOutputsOnly(options_.actorTrainedActions);  // empty: every weight learns
   learner_.holdActorOutputs(options_.heldActions);              // empty: none held
+  if (options_.actorAverageDecay > 0) learner_.averageActor(options_.actorAverageDecay);
   for (int i = 0; i < options_.validationPassages; ++i)
     validationTasks_.push_back(
         environment_.draw(options_.validationSeed, static_cast<std::uint64_t>(i), EpisodePurpose::validation));
@@ -286,7 +287,7 @@ ValidationRecord PolicyTrainer::validateCurrentPolicy() const {
   // logged validation would not be what the saved weights give (docs/policy.md).
   const PolicyBatch states = statesOf(validationTasks_, environment_.stateSize());
   PolicyBatch actions(states.rows(), environment_.actionSize());
-  for (Eigen::Index i = 0; i < states.rows(); ++i) actions.row(i) = learner_.act(states.row(i));
+  for (Eigen::Index i = 0; i < states.rows(); ++i) actions.row(i) = learner_.actDelivered(states.row(i));
   return validationRecord(episode_, rollouts_.rewards(validationTasks_, actions, validationRange(options_)));
 }
 

@@ -64,8 +64,19 @@ class ActorCritic {
   // std::invalid_argument for an output outside the actor's.
   void holdActorOutputs(const std::vector<int>& outputs);
 
-  // pi(s) for each row of `states`.
+  // Polyak averaging of the actor (PolicyTrainOptions::actorAverageDecay): the averaged
+  // actor starts as a copy of the actor now and, after each actor step, moves (1 - decay) of
+  // the way to it; held outputs stay held in it, and startActorFrom starts it again at the
+  // new actor. decay in (0, 1). The learning actor, and so the training, is the same as
+  // without it.
+  void averageActor(double decay);
+  bool averagesActor() const;
+
+  // pi(s) for each row of `states`: the learning actor, which the training explores with.
   PolicyBatch act(const PolicyBatch& states) const;
+  // The actor the learner delivers for each row: the averaged one while averaging (see
+  // averageActor), else the learning actor. Validations score it and saveActor writes it.
+  PolicyBatch actDelivered(const PolicyBatch& states) const;
   // Q(s, a), the critic's expected reward, for each row.
   Eigen::VectorXd value(const PolicyBatch& states, const PolicyBatch& actions) const;
 
@@ -84,11 +95,13 @@ class ActorCritic {
   double updateActor(const PolicyBatch& states, double boundPenalty = 0, double validityBarrier = 0,
                      const Imitation& imitation = {});
 
-  // Both networks and both optimisers' states, for checkpoints.
+  // Both networks and both optimisers' states (and the averaged actor while averaging),
+  // for checkpoints. Loading a state without an averaged actor while averaging starts the
+  // average at the loaded actor.
   void save(torch::serialize::OutputArchive& archive) const;
   void load(torch::serialize::InputArchive& archive);
-  // The actor alone, with LibTorch's own serialisation (Python: torch.jit.load), written
-  // atomically (PolicyFile.hpp writes it with its description).
+  // The delivered actor (actDelivered) alone, with LibTorch's own serialisation (Python:
+  // torch.jit.load), written atomically (PolicyFile.hpp writes it with its description).
   void saveActor(const std::filesystem::path& file) const;
 
  private:

@@ -62,6 +62,12 @@ struct PolicyTrainOptions {
   // collapsed actor, every action on a bound where tanh is flat, does not come back by
   // itself (docs/policy.md "Collapses"); a run without such a validation is unchanged.
   double restoreBelowValidShare = 0.5;
+  // Polyak averaging of the actor's weights (0: none, the paper's): after each actor step
+  // the averaged actor moves (1 - decay) of the way to the learning one, and it is what
+  // the validations score and the policy files hold, while the learning actor explores and
+  // learns as without it (Polyak and Juditsky, SIAM J. Control Optim. 30, 1992;
+  // docs/policy.md "The averaged actor"). 0.999: a memory of about 1000 actor steps.
+  double actorAverageDecay = 0;
   // Exploration noise on the actions (scaled units): sigma = noiseStartSigma for the first
   // noiseStartEpisodes, then noiseAmplitude (cos(2 pi episode / noisePeriod) + 1)
   // (paper: 1, 1000, 0.25, 1000).
