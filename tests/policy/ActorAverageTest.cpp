@@ -134,38 +134,19 @@ TEST(ActorAverage, ATrainerValidatesAndSavesTheAverageAndResumesItBitForBit) {
   EXPECT_NE(straight.validationCurve().back().meanReward, plain.validationCurve().back().meanReward);
 
   // The policy files hold the averaged actor: they give the validation's mean reward.
-  const auto folder = testData::tempFolder("actorAverageTrainer");
-  std::filesystem::create_directories(folder);
-  writePolicyFiles(folder / "policy.xml", straight.learner(), policyStateScaling(BladeParameterRange::readDefault()),
-                   PolicyProvenance{});
-  const Policy saved = Policy::load(folder / "policy.xml");
-  double sum = 0;
-  for (int i = 0; i < run.validationPassages; ++i) {
-    const EpisodeTask task = toy.draw(run.validationSeed, static_cast<std::uint64_t>(i), EpisodePurpose::validation);
-    PolicyState state;
-    std::copy(task.state.begin(), task.state.end(), state.begin());
-    const PolicyAction action = saved.act(state);
-    sum += task.reward(std::vector<double>(action.begin(), action.end()));
-  }
-  EXPECT_EQ(sum / run.validationPassages, straight.validationCurve().back().meanReward);
+  EXPECT_EQ(testRuns::meanRewardThroughPolicyFiles(straight.learner(), toy, run, "actorAverageTrainer"),
+            straight.validationCurve().back().meanReward);
 
-  const auto file = folder / "checkpoint.pt";
+  const auto file = testData::tempFolder("actorAverageTrainer") / "checkpoint.pt";
   {
     PolicyTrainer first(run, toy, rollouts);
-    std::atomic<bool> stop{false};
-    PolicyTrainer::Events events;
-    events.checkpointDue = [&](const PolicyTrainer& t) {
-      t.saveCheckpoint(file);
-      stop = true;
-    };
-    ASSERT_FALSE(first.run(&stop, events));
+    ASSERT_TRUE(testRuns::runToFirstCheckpoint(first, file));
+    ASSERT_EQ(first.episode(), 64);
   }
   PolicyTrainer resumed(run, toy, rollouts);
   resumed.resume(file);
   ASSERT_TRUE(resumed.run(nullptr, {}));
-  PolicyBatch states(7, 24);
-  for (int i = 0; i < 7; ++i)
-    for (int k = 0; k < 24; ++k) states(i, k) = std::sin(1.0 + i * 24 + k);
+  const PolicyBatch states = testRuns::fingerprintStates(24);
   EXPECT_EQ(resumed.learner().actDelivered(states), straight.learner().actDelivered(states));
   EXPECT_EQ(resumed.validationCurve().back().meanReward, straight.validationCurve().back().meanReward);
 }

@@ -42,13 +42,7 @@ TEST(PolicyTrainer, ResumingFromACheckpointGivesTheSameWeightsBitForBit) {
     const auto file = testData::tempFolder("policyTrainer" + variant) / "checkpoint.pt";
     {
       PolicyTrainer first(run, toy, rollouts);
-      std::atomic<bool> stop{false};
-      PolicyTrainer::Events events;
-      events.checkpointDue = [&](const PolicyTrainer& t) {
-        t.saveCheckpoint(file);
-        stop = true;  // as if killed right after the first checkpoint
-      };
-      ASSERT_FALSE(first.run(&stop, events));
+      ASSERT_TRUE(testRuns::runToFirstCheckpoint(first, file));
       EXPECT_EQ(first.episode(), 64);
     }
     PolicyTrainer resumed(run, toy, rollouts);
@@ -170,20 +164,7 @@ TEST(PolicyTrainer, TheValidationScoresTheActionsOfOneStateForwardPasses) {
   o.validationPassages = 50;
   // The mean reward of the trainer's weights through the files, as policyMesh reads them.
   const auto throughPolicyFiles = [&](const PolicyTrainer& trainer) {
-    const auto dir = testData::tempFolder("validationOneState");
-    std::filesystem::create_directories(dir);
-    writePolicyFiles(dir / "policy.xml", trainer.learner(), policyStateScaling(BladeParameterRange::readDefault()),
-                     PolicyProvenance{});
-    const Policy policy = Policy::load(dir / "policy.xml");
-    double sum = 0;
-    for (int i = 0; i < o.validationPassages; ++i) {
-      const EpisodeTask task = toy.draw(o.validationSeed, static_cast<std::uint64_t>(i), EpisodePurpose::validation);
-      PolicyState state;
-      std::copy(task.state.begin(), task.state.end(), state.begin());
-      const PolicyAction action = policy.act(state);
-      sum += task.reward(std::vector<double>(action.begin(), action.end()));
-    }
-    return sum / o.validationPassages;
+    return testRuns::meanRewardThroughPolicyFiles(trainer.learner(), toy, o, "validationOneState");
   };
   // Stopped at episode 48, between the validations at 32 and 64 (as by Ctrl-C).
   PolicyTrainer trainer(o, toy, rollouts);
@@ -443,13 +424,7 @@ TEST(PolicyTrainer, ABatchBuiltButNotLearntIsLearntFirstWhenStartedUnderTheOther
   const auto file = testData::tempFolder("policyTrainerSchedules") / "checkpoint.pt";
   {
     PolicyTrainer first(during, toy, rollouts);
-    std::atomic<bool> stop{false};
-    PolicyTrainer::Events events;
-    events.checkpointDue = [&](const PolicyTrainer& t) {
-      t.saveCheckpoint(file);
-      stop = true;
-    };
-    ASSERT_FALSE(first.run(&stop, events));
+    ASSERT_TRUE(testRuns::runToFirstCheckpoint(first, file));
     ASSERT_EQ(first.episode(), 64);
     ASSERT_EQ(first.buffer().size(), 64);  // the batch of episodes 64-79 is built, not learnt
   }
