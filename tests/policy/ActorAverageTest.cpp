@@ -3,15 +3,12 @@
 // bit, it is what a trainer validates and saves, and checkpoints keep it.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <atomic>
-#include <cmath>
 #include <sstream>
+#include <string>
 
 #include "../TestFiles.hpp"
 #include "PolicyTrainerTestRuns.hpp"
 #include "passageMesh/policy/ActorCritic.hpp"
-#include "passageMesh/policy/Policy.hpp"
 #include "passageMesh/policy/PolicyNetworks.hpp"
 #include "passageMesh/policy/PolicyTrainer.hpp"
 #include "passageMesh/policy/ToyEnvironment.hpp"
