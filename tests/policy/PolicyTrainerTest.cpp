@@ -447,6 +447,61 @@ TEST(PolicyTrainer, ABatchBuiltButNotLearntIsLearntFirstWhenStartedUnderTheOther
   }
 }
 
+// A tournament's trial (policyTrain to its <episodes>, then -resume with more): under
+// duringNextRollouts the finished run builds the batch past its end while it learns its
+// last one, as a longer run does, and keeps it in its checkpoint; so the continuation has
+// the weights of one straight run. A -startFrom drops that batch (its run builds its first
+// batch under its own settings); a finished run resumed at its own length runs nothing.
+TEST(PolicyTrainer, AFinishedRunResumedToMoreEpisodesGivesTheWeightsOfOneStraightRun) {
+  const ToyEnvironment toy(24, 8, 3);
+  ThreadRollouts rollouts(1);
+  PolicyTrainOptions longer = smallRun(160);  // the learner updates from episode 20
+  longer.learnerSchedule = LearnerSchedule::duringNextRollouts;
+  PolicyTrainOptions trial = longer;
+  trial.episodes = 64;
+  const auto file = testData::tempFolder("policyTrainerTrial") / "checkpoint.pt";
+  {
+    PolicyTrainer first(trial, toy, rollouts);
+    ASSERT_TRUE(first.run(nullptr, {}));
+    ASSERT_EQ(first.episode(), 64);
+    first.saveCheckpoint(file);
+  }
+  PolicyTrainer straight(longer, toy, rollouts);
+  ASSERT_TRUE(straight.run(nullptr, {}));
+
+  PolicyTrainer again(trial, toy, rollouts);  // resumed at its own length: nothing to run
+  again.resume(file);
+  ASSERT_TRUE(again.run(nullptr, {}));
+  EXPECT_EQ(again.episode(), 64);
+  again.saveCheckpoint(file);  // still holds the batch past the end
+
+  PolicyTrainer continued(longer, toy, rollouts);
+  continued.resume(file);
+  EXPECT_EQ(continued.episode(), 64);
+  ASSERT_TRUE(continued.run(nullptr, {}));
+  EXPECT_EQ(fingerprint(continued.learner(), 24, 8), fingerprint(straight.learner(), 24, 8));
+  ASSERT_EQ(continued.validationCurve().size(), straight.validationCurve().size() + 1);  // + the trial's end
+  EXPECT_EQ(continued.validationCurve().back().meanReward, straight.validationCurve().back().meanReward);
+
+  PolicyTrainer restarted(longer, toy, rollouts);  // -startFrom: the batch past the end dropped
+  restarted.resume(file, false);
+  ASSERT_TRUE(restarted.run(nullptr, {}));
+  EXPECT_EQ(restarted.episode(), 160);
+  EXPECT_EQ(restarted.buffer().size(), 160);
+  EXPECT_NE(fingerprint(restarted.learner(), 24, 8).first, fingerprint(straight.learner(), 24, 8).first);
+
+  PolicyTrainOptions tooFew = longer;  // between the end and the batch built past it
+  tooFew.episodes = 72;
+  PolicyTrainer refused(tooFew, toy, rollouts);
+  try {
+    refused.resume(file);
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the checkpoint has built 80 episodes (64 learnt)"), std::string::npos)
+        << e.what();
+  }
+}
+
 // <heldActions>: the held actions are the start action's in every episode (no noise) and
 // in the trained actor for every state; the others explore and learn.
 TEST(PolicyTrainer, HeldActionsKeepTheStartActionInEveryEpisodeAndState) {

@@ -11,11 +11,15 @@ set -euo pipefail
 . "$(dirname "$0")/tutorialWorkspace.sh" "$1" "$2"
 copyTutorial policyTrainTwoStage
 case="$work/tutorials/policyTrainTwoStage"
-shrink() {  # shrink STAGE EPISODES CASE: a few batches, validation on 4 passages every batch
+# shrink STAGE EPISODES CASE: a few batches, validation on 4 passages every batch, a
+# minibatch of 16 so that the learner updates before the tournament's trial ends (else the
+# comparison of the chosen seed with a straight run below would test nothing)
+shrink() {
   sed -i -e "s#<episodes>[0-9]*</episodes>#<episodes>$2</episodes>#" \
     -e "s#<validationEvery>[0-9]*</validationEvery>#<validationEvery>32</validationEvery>#" \
     -e "s#<validationPassages>[0-9]*</validationPassages>#<validationPassages>4</validationPassages>#" \
     -e "s#<checkpointEvery>[0-9]*</checkpointEvery>#<checkpointEvery>32</checkpointEvery>#" \
+    -e "s#<minibatch>[0-9]*</minibatch>#<minibatch>16</minibatch>#" \
     -e "s#<actorUpdatesFrom>[0-9]*</actorUpdatesFrom>#<actorUpdatesFrom>32</actorUpdatesFrom>#" \
     "$3/$1/system/policyTrainDict.xml"
 }
@@ -83,5 +87,7 @@ grep -q "stage 1 is stage1-seed$expected" "$work/tour2.out" || { cat "$work/tour
 "$tour/Allrun" -seeds "1 3" > "$work/tour3.out" 2>&1 && fail "another tournament in the same case was not refused"
 "$tour/Allrun" -seeds "1 2" -trial 96 > "$work/tour4.out" 2>&1 && fail "a trial as long as stage 1 was not refused"
 grep -q "below stage 1's 96" "$work/tour4.out" || { cat "$work/tour4.out"; fail "no clear error for a trial as long as stage 1"; }
+"$tour/Allrun" -seeds "1 2" -trial 70 > "$work/tour5.out" 2>&1 && fail "a trial of part of a batch was not refused"
+grep -q "a multiple of stage 1's <batchEpisodes> 32" "$work/tour5.out" || { cat "$work/tour5.out"; fail "no clear error for a trial of part of a batch"; }
 echo "runPolicyTrainTwoStage: three stages in order, finished ones kept, a stopped one resumed; the tournament" \
   "chose the better seed, whose weights are a straight run's"

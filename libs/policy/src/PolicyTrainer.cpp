@@ -244,7 +244,11 @@ void PolicyTrainer::runBatch() {
   const bool learnsDuringRollouts = options_.learnerSchedule == LearnerSchedule::duringNextRollouts;
   if (!learnsDuringRollouts) learnPending();  // none, unless started from a duringNextRollouts checkpoint
   const long first = builtEpisodes();
-  const int count = static_cast<int>(std::min<long>(options_.batchEpisodes, options_.episodes - first));
+  // Past the end (duringNextRollouts, the last batch learnt): a whole batch, the one a longer
+  // run builds here, so that a -resume to more episodes goes on as one straight run.
+  const int count = static_cast<int>(first >= options_.episodes
+                                         ? options_.batchEpisodes
+                                         : std::min<long>(options_.batchEpisodes, options_.episodes - first));
   std::vector<EpisodeTask> tasks(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i)
     tasks[static_cast<std::size_t>(i)] =
@@ -301,10 +305,7 @@ bool PolicyTrainer::run(const std::atomic<bool>* stop, const Events& events) {
   while (episode_ < options_.episodes) {
     if (stop && stop->load()) return false;
     const long before = episode_;
-    if (builtEpisodes() < options_.episodes)
-      runBatch();
-    else
-      learnPending();  // the last batch, built during the one before
+    runBatch();
     if (options_.searchEvery > 0)
       for (long k = before / options_.searchEvery + 1; k <= episode_ / options_.searchEvery; ++k)
         search(static_cast<std::uint64_t>(k));
@@ -363,8 +364,11 @@ void PolicyTrainer::saveCheckpoint(const std::filesystem::path& file) const {
   };
   writeBuffer(buffer_, "buffer");
   writeBuffer(demonstrations_, "demonstrations");
-  if (pending_.actions.rows() > 0)  // learnerSchedule duringNextRollouts: built, not yet learnt
-    writeEpisodes("pending", pending_.states, pending_.actions, pending_.rewards);
+  // learnerSchedule duringNextRollouts: built, not yet learnt; at the run's end, the batch
+  // built past it ("next": a -resume to more episodes learns it, a -startFrom drops it).
+  if (pending_.actions.rows() > 0)
+    writeEpisodes(episode_ >= options_.episodes ? "next" : "pending", pending_.states, pending_.actions,
+                  pending_.rewards);
   archive.write("recentRewards", batchTensor(Eigen::Map<const PolicyBatch>(recentRewards_.data(),
                                                                            static_cast<Eigen::Index>(recentRewards_.size()), 1)));
   archive.write("learning", tableTensor(learning_, 6, [](const LearningRecord& x) {
@@ -473,9 +477,12 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
     };
     ReplayBuffer buffer = readBuffer("buffer", "the buffer", false);
     ReplayBuffer demonstrations = readBuffer("demonstrations", "the demonstrations", true);
-    // The batch built but not yet learnt (learnerSchedule duringNextRollouts), in order.
+    // The batch built but not yet learnt (learnerSchedule duringNextRollouts), in order; or
+    // the one built past the end of a finished run, which only a -resume continues (a
+    // -startFrom's run builds its first batch under its own settings).
     PendingBatch pending;
-    readEpisodes("pending", "the pending batch", true, pending);
+    if (!readEpisodes("pending", "the pending batch", true, pending) && sameSettings)
+      readEpisodes("next", "the batch built past the run's end", true, pending);
     std::vector<double> recent;
     torch::Tensor recentTensor;
     if (archive.try_read("recentRewards", recentTensor)) {
@@ -498,7 +505,8 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
                                                    static_cast<int>(v[i][3]), static_cast<int>(v[i][4])});
     const auto c = counters.accessor<double, 1>();
     const long learnt = static_cast<long>(c[0]);
-    if (pending.actions.rows() > 0 && learnt + pending.actions.rows() > options_.episodes)
+    // (A finished run resumed at its own length has nothing left to run and keeps its batch.)
+    if (pending.actions.rows() > 0 && learnt < options_.episodes && learnt + pending.actions.rows() > options_.episodes)
       throw InputError(name, 0, "the checkpoint has built " + std::to_string(learnt + pending.actions.rows()) +
                                     " episodes (" + std::to_string(learnt) + " learnt): ask for at least that many "
                                     "<episodes>, not " + std::to_string(options_.episodes));

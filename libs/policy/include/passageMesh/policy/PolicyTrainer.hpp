@@ -11,7 +11,10 @@
 // from the actor before those updates. With options.searchEvery > 0 a search of one
 // passage's actions follows every searchEvery episodes (search-guided exploration,
 // PolicyTrainOptions.hpp). Nothing depends on the number of threads or ranks, and a
-// checkpoint taken between batches resumes to the same weights bit for bit.
+// checkpoint taken between batches resumes to the same weights bit for bit. Under
+// duringNextRollouts a run also builds the batch past its end while it learns its last one
+// (kept in the checkpoint), so that a -resume to more episodes gives the weights of one
+// straight run of that length (when <episodes> is a multiple of batchEpisodes).
 #include <atomic>
 #include <chrono>
 #include <filesystem>
@@ -62,7 +65,9 @@ class PolicyTrainer {
   // count carry on under this trainer's settings (policyTrain -startFrom); a batch built but
   // not yet learnt (a checkpoint of learnerSchedule duringNextRollouts) is learnt first
   // under either schedule. A checkpoint whose built episodes pass options.episodes is
-  // refused (the run would end past them).
+  // refused (the run would end past them), unless it has learnt them all (nothing to run).
+  // The batch a finished duringNextRollouts run built past its end is continued with
+  // sameSettings and dropped without (the new run builds its first batch itself).
   void resume(const std::filesystem::path& checkpoint, bool sameSettings = true);
   // Starts the actor as a trained policy's (policyTrain -actorFrom): a single policy whose
   // state was scaled as `scaling` (this run's), with this run's hidden layers and as many or
