@@ -3,7 +3,6 @@
 // bit, it is what a trainer validates and saves, and checkpoints keep it.
 #include <gtest/gtest.h>
 
-#include <sstream>
 #include <string>
 
 #include "../TestFiles.hpp"
@@ -86,29 +85,15 @@ TEST(ActorAverage, SavingAndLoadingKeepsTheAverageAndAStateWithoutOneStartsItAtT
   learner.averageActor(0.95);
   train(learner, 100);
   // Through bytes, as PolicyTrainer keeps the best validation's learner.
-  const auto bytesOf = [](const ActorCritic& l) {
-    torch::serialize::OutputArchive out;
-    l.save(out);
-    std::ostringstream bytes;
-    out.save_to(bytes);
-    return bytes.str();
-  };
-  const auto loadInto = [](ActorCritic& l, const std::string& state) {
-    std::istringstream bytes(state);
-    torch::serialize::InputArchive in;
-    in.load_from(bytes);
-    l.load(in);
-  };
-
   ActorCritic loaded(layout, {1e-2, 1e-3}, 4);  // other weights until loaded
   loaded.averageActor(0.95);
-  loadInto(loaded, bytesOf(learner));
+  loaded.loadStateBytes(learner.stateBytes());
   EXPECT_EQ(loaded.actDelivered(someStates()), learner.actDelivered(someStates()));
   EXPECT_EQ(loaded.act(someStates()), learner.act(someStates()));
 
   ActorCritic plain(layout, {1e-2, 1e-3}, 3, {0.1, -0.2, 0.25});
   train(plain, 100);
-  loadInto(loaded, bytesOf(plain));
+  loaded.loadStateBytes(plain.stateBytes());
   EXPECT_EQ(loaded.actDelivered(someStates()), plain.act(someStates()));
 }
 

@@ -287,6 +287,21 @@ void ActorCritic::startActorFrom(const std::filesystem::path& actorFile, const N
   if (networks_->averaged) networks_->restartAverage();
 }
 
+std::string ActorCritic::stateBytes() const {
+  torch::serialize::OutputArchive archive;
+  save(archive);
+  std::ostringstream bytes;
+  archive.save_to(bytes);
+  return bytes.str();
+}
+
+void ActorCritic::loadStateBytes(const std::string& bytes) {
+  std::istringstream in(bytes);
+  torch::serialize::InputArchive archive;
+  archive.load_from(in);
+  load(archive);
+}
+
 void ActorCritic::saveActor(const std::filesystem::path& file) const {
   saveModuleAtomically(*networks_->delivered(), file);
 }

@@ -71,21 +71,6 @@ EpisodeRange validationRange(const PolicyTrainOptions& options) {
 
 // The learner's whole state (networks and optimisers) as bytes, and back: the state at the
 // best validation, which a collapse goes back to (PolicyTrainOptions::restoreBelowValidShare).
-std::string learnerState(const ActorCritic& learner) {
-  torch::serialize::OutputArchive archive;
-  learner.save(archive);
-  std::ostringstream bytes;
-  archive.save_to(bytes);
-  return bytes.str();
-}
-
-void loadLearnerState(ActorCritic& learner, const std::string& state) {
-  std::istringstream bytes(state);
-  torch::serialize::InputArchive archive;
-  archive.load_from(bytes);
-  learner.load(archive);
-}
-
 // The validation summary of one set of rewards.
 ValidationRecord validationRecord(long episode, const std::vector<double>& rewards) {
   const RewardSummary summary = summarizeRewards(rewards);
@@ -319,11 +304,11 @@ bool PolicyTrainer::run(const std::atomic<bool>* stop, const Events& events) {
         if (latest.meanReward > bestValidation_) {
           bestValidation_ = latest.meanReward;
           bestValid_ = latest.valid;
-          if (options_.restoreBelowValidShare > 0) bestLearnerState_ = learnerState(learner_);
+          if (options_.restoreBelowValidShare > 0) bestLearnerState_ = learner_.stateBytes();
           if (events.newBestValidation) events.newBestValidation(*this);
         } else if (!bestLearnerState_.empty() && latest.valid < options_.restoreBelowValidShare * bestValid_) {
           // A collapse (docs/policy.md "Collapses"): back to the best validation's learner.
-          loadLearnerState(learner_, bestLearnerState_);
+          learner_.loadStateBytes(bestLearnerState_);
           learner_.holdActorOutputs(options_.heldActions);  // (a no-op: the state holds them)
           restores_.push_back(episode_);
           if (events.learnerRestored) events.learnerRestored(*this);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "passageMesh/policy/NetworkLayout.hpp"
@@ -100,6 +101,9 @@ class ActorCritic {
   // average at the loaded actor.
   void save(torch::serialize::OutputArchive& archive) const;
   void load(torch::serialize::InputArchive& archive);
+  // The same as bytes in memory (the trainer keeps the best validation's learner so).
+  std::string stateBytes() const;
+  void loadStateBytes(const std::string& bytes);
   // The delivered actor (actDelivered) alone, with LibTorch's own serialisation (Python:
   // torch.jit.load), written atomically (PolicyFile.hpp writes it with its description).
   void saveActor(const std::filesystem::path& file) const;
