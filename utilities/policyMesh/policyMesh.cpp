@@ -51,7 +51,7 @@ int main(int argc, char* argv[]) {
     writeMeshDict(cli.caseDir() / "system" / "meshDict.xml", input.parameters);
     const std::string members =
         policy.memberCount() > 1 ? "an ensemble of " + std::to_string(policy.memberCount()) + " trained in " : "";
-    std::printf("policyMesh: policy %s (%s%ld episodes), forward pass %.3f ms; meshing parameters "
+    std::printf("policyMesh: policy %s (%s%ld episodes), forward pass %.3f ms (the first: LibTorch starting up); meshing parameters "
                 "(yIn, yOut in metres) written to system/meshDict.xml:\n",
                 policyFile.c_str(), members.c_str(), policy.provenance().episodes, 1e3 * forwardSeconds);
     const auto values = input.parameters.toArray();
