@@ -69,8 +69,6 @@ EpisodeRange validationRange(const PolicyTrainOptions& options) {
   return {options.validationSeed, 0, 1, EpisodePurpose::validation};
 }
 
-// The learner's whole state (networks and optimisers) as bytes, and back: the state at the
-// best validation, which a collapse goes back to (PolicyTrainOptions::restoreBelowValidShare).
 // The validation summary of one set of rewards.
 ValidationRecord validationRecord(long episode, const std::vector<double>& rewards) {
   const RewardSummary summary = summarizeRewards(rewards);
