@@ -261,3 +261,24 @@ TEST(PolicyTrainOptions, TheShippedMembersTrainingDictionariesRead) {
   EXPECT_EQ(withoutWideNoise(a), withoutWideNoise(b));
   EXPECT_EQ(seed3.seed, a.seed);
 }
+
+// The third member is the two-stage tutorial's recipe with two settings changed (docs/policy.md
+// "The shipped policy: three members"): its dictionaries must say exactly that, or the recorded
+// command would not reproduce it.
+TEST(PolicyTrainOptions, TheThirdMembersDictionariesAreTheTwoStageRecipeWithSeed2AndTwoCriticSteps) {
+  const std::filesystem::path source(PASSAGEMESH_SOURCE_DIR);
+  const std::filesystem::path member = source / "etc" / "policy" / "seed2critic2";
+  const std::filesystem::path recipe = source / "tutorials" / "policyTrainTwoStage";
+  const std::vector<std::pair<std::string, std::string>> stages{
+      {"policyTrainDict-stage1.xml", "stage1"}, {"policyTrainDict-A.xml", "stage2A"}, {"policyTrainDict-B.xml", "stage2B"}};
+  for (const auto& [memberDict, recipeFolder] : stages) {
+    SCOPED_TRACE(memberDict);
+    const PolicyTrainOptions shipped = readPolicyTrainDict(member / memberDict);
+    PolicyTrainOptions expected = readPolicyTrainDict(recipe / recipeFolder / "system" / "policyTrainDict.xml");
+    expected.seed = 2;
+    if (recipeFolder == "stage1") expected.criticUpdatesPerEpisode = 2;
+    EXPECT_EQ(shipped.seed, 2u);
+    EXPECT_EQ(trajectorySettings(shipped), trajectorySettings(expected));
+    EXPECT_EQ(shipped.episodes, expected.episodes);
+  }
+}
