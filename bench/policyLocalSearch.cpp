@@ -1,0 +1,102 @@
+// policyLocalSearch: how far is a policy's one-shot action from a search's optimum, passage
+// by passage, and does that optimum lie with alphaCamber low or high? (docs/policy.md
+// "Is the policy centred?".)
+//   policyLocalSearch POLICY.xml SEED FIRST COUNT BUDGET [ALPHA_SPLIT]
+// On PassageEnvironment's passages FIRST..FIRST+COUNT-1 of stream SEED (policyTrain's
+// validation set is stream 20261202; edge radii halfLogUniform), two CMA-ES runs of BUDGET
+// meshes each (iterOptimize's default method, seed 1) start from the one-shot action, both
+// over all ten actions in scaled units: one with alphaCamber held at or below ALPHA_SPLIT
+// (scaled; default 0.3, i.e. alphaCamber 0.65), the other at or above it; the start is the
+// action clipped into each box. Prints one CSV row per passage: the one-shot reward, each
+// box's best reward and its alphaCamber (in [0, 1]); an invalid mesh is -1, as in training.
+// Passages run side by side on all cores; the output does not depend on their number.
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "passageMesh/core/CommandLine.hpp"
+#include "passageMesh/core/InputError.hpp"
+#include "passageMesh/core/ParallelFor.hpp"
+#include "passageMesh/optimize/Optimizer.hpp"
+#include "passageMesh/policy/Policy.hpp"
+#include "passageMesh/policy/PolicyEnvironment.hpp"
+
+using namespace passageMesh;
+
+namespace {
+
+struct BoxBest {
+  double reward = 0;
+  double alphaCamber = 0;  // in [0, 1]
+};
+
+BoxBest searchFrom(const EpisodeTask& task, const std::vector<double>& action, int alphaIndex, double lowAlpha,
+                   double highAlpha, long budget) {
+  const int n = static_cast<int>(action.size());
+  BoxProblem box;
+  box.lower = Eigen::VectorXd::Constant(n, -1.0);
+  box.upper = Eigen::VectorXd::Constant(n, 1.0);
+  box.lower[alphaIndex] = lowAlpha;
+  box.upper[alphaIndex] = highAlpha;
+  Eigen::VectorXd start(n);
+  for (int k = 0; k < n; ++k) start[k] = std::clamp(action[static_cast<std::size_t>(k)], box.lower[k], box.upper[k]);
+  OptimizerOptions options;
+  options.budget = budget;
+  options.threads = 1;
+  options.start = start;
+  const BatchObjective objective = [&](const std::vector<Eigen::VectorXd>& points) {
+    std::vector<double> rewards;
+    for (const Eigen::VectorXd& p : points) rewards.push_back(task.reward(std::vector<double>(p.data(), p.data() + n)));
+    return rewards;
+  };
+  const OptimizationResult result = optimize(box, objective, options);
+  return {result.bestValue, (result.best[alphaIndex] + 1) / 2};
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+  return runUtility("policyLocalSearch", [&] {
+    if (argc < 6 || argc > 7) {
+      std::fprintf(stderr, "usage: policyLocalSearch POLICY.xml SEED FIRST COUNT BUDGET [ALPHA_SPLIT]\n");
+      return 2;
+    }
+    const Policy policy = Policy::load(argv[1]);
+    const std::uint64_t seed = std::stoull(argv[2]);
+    const int first = std::stoi(argv[3]), count = std::stoi(argv[4]);
+    const long budget = std::stol(argv[5]);
+    const double split = argc > 6 ? std::stod(argv[6]) : 0.3;
+    if (first < 0 || count < 1 || budget < 1)
+      throw InputError("command line: FIRST >= 0, COUNT >= 1 and BUDGET >= 1 expected");
+    if (!(split > -1 && split < 1)) throw InputError("command line: ALPHA_SPLIT in (-1, 1) expected, not " + std::string(argv[6]));
+    const auto& names = MeshingParameters::names();
+    const int alphaIndex = static_cast<int>(std::find(names.begin(), names.end(), "alphaCamber") - names.begin());
+    const PassageEnvironment environment(EdgeRadiusDraw::halfLogUniform, policy.stateScaling());
+
+    struct Row {
+      double oneShot = 0;
+      BoxBest low, high;
+    };
+    std::vector<Row> rows(static_cast<std::size_t>(count));
+    parallelFor(count, 0, [&](int i) {
+      const EpisodeTask task =
+          environment.draw(seed, static_cast<std::uint64_t>(first + i), EpisodePurpose::validation);
+      PolicyState state;
+      std::copy(task.state.begin(), task.state.end(), state.begin());
+      const PolicyAction a = policy.act(state);
+      const std::vector<double> action(a.begin(), a.end());
+      Row& row = rows[static_cast<std::size_t>(i)];
+      row.oneShot = task.reward(action);
+      row.low = searchFrom(task, action, alphaIndex, -1.0, split, budget);
+      row.high = searchFrom(task, action, alphaIndex, split, 1.0, budget);
+    });
+    std::printf("passage,oneShotReward,lowBestReward,lowAlphaCamber,highBestReward,highAlphaCamber\n");
+    for (int i = 0; i < count; ++i) {
+      const Row& r = rows[static_cast<std::size_t>(i)];
+      std::printf("%d,%.17g,%.17g,%.6f,%.17g,%.6f\n", first + i, r.oneShot, r.low.reward, r.low.alphaCamber,
+                  r.high.reward, r.high.alphaCamber);
+    }
+    return 0;
+  });
+}
