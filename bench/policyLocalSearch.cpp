@@ -12,10 +12,10 @@
 // action clipped into each box. Prints one CSV row per passage: the one-shot reward, each
 // box's best reward and its alphaCamber (in [0, 1]); an invalid mesh is -1, as in training.
 // With `random RADIUS`: BUDGET actions drawn around the one-shot action instead, each
-// action moved by uniform(-RADIUS, RADIUS) scaled units (clipped; random stream per
-// passage); the row holds the one-shot reward, the best drawn, and the mean and standard
-// deviation over the valid draws. What the best draw gains at a radius of 1 % of the range
-// is roughness no smooth policy can follow.
+// action moved by uniform(-RADIUS, RADIUS) scaled units (clipped; the passage's random
+// stream 1); the row holds the one-shot reward, the best drawn, and the mean and standard
+// deviation over the valid draws. What the best draw gains at a radius of 1 % of the
+// range is roughness no smooth policy can follow.
 // Passages run side by side on all cores; the output does not depend on their number.
 #include <algorithm>
 #include <cmath>
@@ -68,9 +68,10 @@ struct Draws {
   double best = 0, mean = 0, deviation = 0;
 };
 
+// The draws come from the passage's random stream 1 (stream 0 drew the passage).
 Draws drawAround(const EpisodeTask& task, const std::vector<double>& action, double oneShot, double radius,
-                 long budget, std::uint64_t stream) {
-  std::mt19937_64 random(stream);
+                 long budget, std::uint64_t seed, std::uint64_t passage) {
+  std::mt19937_64 random = episodeRandom(seed, passage, 1);
   std::uniform_real_distribution<double> move(-radius, radius);
   Draws d{oneShot, 0, 0};
   double sum = 0, squares = 0;
@@ -135,7 +136,7 @@ int main(int argc, char* argv[]) {
       Row& row = rows[static_cast<std::size_t>(i)];
       row.oneShot = task.reward(action);
       if (random) {
-        row.draws = drawAround(task, action, row.oneShot, radius, budget, seed * 1000003ULL + static_cast<std::uint64_t>(first + i));
+        row.draws = drawAround(task, action, row.oneShot, radius, budget, seed, static_cast<std::uint64_t>(first + i));
         return;
       }
       row.low = searchFrom(task, action, alphaIndex, -1.0, split, budget);
