@@ -13,9 +13,9 @@
 // box's best reward and its alphaCamber (in [0, 1]); an invalid mesh is -1, as in training.
 // With `random RADIUS`: BUDGET actions drawn around the one-shot action instead, each
 // action moved by uniform(-RADIUS, RADIUS) scaled units (clipped; the passage's random
-// stream 1); the row holds the one-shot reward, the best drawn, and the mean and standard
-// deviation over the valid draws. What the best draw gains at a radius of 1 % of the
-// range is roughness no smooth policy can follow.
+// stream 1); the row holds the one-shot reward, the best draw (-1 if none is valid), and
+// the mean and standard deviation over the valid draws. What the best draw gains at a
+// radius of 0.01 (half a per cent of each range) is roughness no smooth policy can follow.
 // Passages run side by side on all cores; the output does not depend on their number.
 #include <algorithm>
 #include <cmath>
@@ -68,17 +68,17 @@ struct Draws {
   double best = 0, mean = 0, deviation = 0;
 };
 
-// The draws come from the passage's random stream 1 (stream 0 drew the passage).
-Draws drawAround(const EpisodeTask& task, const std::vector<double>& action, double oneShot, double radius,
-                 long budget, std::uint64_t seed, std::uint64_t passage) {
+// The draws come from the passage's random stream 1 (stream 0 drew the passage), through
+// the project's uniform01 (the same numbers with every standard library).
+Draws drawAround(const EpisodeTask& task, const std::vector<double>& action, double radius, long budget,
+                 std::uint64_t seed, std::uint64_t passage) {
   std::mt19937_64 random = episodeRandom(seed, passage, 1);
-  std::uniform_real_distribution<double> move(-radius, radius);
-  Draws d{oneShot, 0, 0};
+  Draws d{invalidMeshQuality, 0, 0};
   double sum = 0, squares = 0;
   long valid = 0;
   for (long k = 0; k < budget; ++k) {
     std::vector<double> moved = action;
-    for (double& x : moved) x = std::clamp(x + move(random), -1.0, 1.0);
+    for (double& x : moved) x = std::clamp(x + radius * (2 * uniform01(random) - 1), -1.0, 1.0);
     const double r = task.reward(moved);
     d.best = std::max(d.best, r);
     if (r > invalidMeshQuality) {
@@ -100,8 +100,8 @@ Draws drawAround(const EpisodeTask& task, const std::vector<double>& action, dou
 
 int main(int argc, char* argv[]) {
   return runUtility("policyLocalSearch", [&] {
-    const bool random = argc == 8 && std::string(argv[6]) == "random";
-    if (argc < 6 || argc > 8 || (argc == 8 && !random)) {
+    const bool random = argc >= 7 && std::string(argv[6]) == "random";
+    if (argc < 6 || argc > 8 || (argc == 8) != random) {
       std::fprintf(stderr,
                    "usage: policyLocalSearch POLICY.xml SEED FIRST COUNT BUDGET [ALPHA_SPLIT | random RADIUS]\n");
       return 2;
@@ -113,7 +113,8 @@ int main(int argc, char* argv[]) {
     const double split = argc == 7 ? std::stod(argv[6]) : 0.3;
     const double radius = random ? std::stod(argv[7]) : 0;
     if (first < 0 || count < 1 || budget < 1)
-      throw InputError("command line: FIRST >= 0, COUNT >= 1 and BUDGET >= 1 expected");
+      throw InputError("command line: FIRST >= 0, COUNT >= 1 and BUDGET >= 1 expected, not " + std::to_string(first) +
+                       ", " + std::to_string(count) + ", " + std::to_string(budget));
     if (!(split > -1 && split < 1)) throw InputError("command line: ALPHA_SPLIT in (-1, 1) expected, not " + std::string(argv[6]));
     if (random && !(radius > 0 && radius <= 2)) throw InputError("command line: RADIUS in (0, 2] expected, not " + std::string(argv[7]));
     const auto& names = MeshingParameters::names();
@@ -136,7 +137,7 @@ int main(int argc, char* argv[]) {
       Row& row = rows[static_cast<std::size_t>(i)];
       row.oneShot = task.reward(action);
       if (random) {
-        row.draws = drawAround(task, action, row.oneShot, radius, budget, seed, static_cast<std::uint64_t>(first + i));
+        row.draws = drawAround(task, action, radius, budget, seed, static_cast<std::uint64_t>(first + i));
         return;
       }
       row.low = searchFrom(task, action, alphaIndex, -1.0, split, budget);

@@ -1,5 +1,5 @@
 // policySensitivity: is a policy's one-shot action off the best place on average, one
-// meshing parameter at a time? (docs/policy.md "Where the one-shot Q is lost".)
+// meshing parameter at a time? (docs/policy.md "Is the policy centred?".)
 //   policySensitivity POLICY.xml SEED COUNT [STEP ...]
 // On PassageEnvironment's passages 0..COUNT-1 of stream SEED (policyTrain's validation set
 // is stream 20261202; edge radii halfLogUniform, as policyTrain draws them), each action of

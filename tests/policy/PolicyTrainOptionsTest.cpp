@@ -273,8 +273,13 @@ TEST(PolicyTrainOptions, TheThirdMembersDictionariesAreTheTwoStageRecipeWithSeed
       {"policyTrainDict-stage1.xml", "stage1"}, {"policyTrainDict-A.xml", "stage2A"}, {"policyTrainDict-B.xml", "stage2B"}};
   for (const auto& [memberDict, recipeFolder] : stages) {
     SCOPED_TRACE(memberDict);
+    // (the reader gives the defaults for a missing file: both must exist)
+    const std::filesystem::path recipeDict = recipe / recipeFolder / "system" / "policyTrainDict.xml";
+    ASSERT_TRUE(std::filesystem::exists(member / memberDict));
+    ASSERT_TRUE(std::filesystem::exists(recipeDict));
     const PolicyTrainOptions shipped = readPolicyTrainDict(member / memberDict);
-    PolicyTrainOptions expected = readPolicyTrainDict(recipe / recipeFolder / "system" / "policyTrainDict.xml");
+    PolicyTrainOptions expected = readPolicyTrainDict(recipeDict);
+    EXPECT_EQ(shipped.criticUpdatesPerEpisode, recipeFolder == "stage1" ? 2 : 1);
     expected.seed = 2;
     EXPECT_EQ(shipped.seed, 2u);
     EXPECT_EQ(trajectorySettings(shipped), trajectorySettings(expected));
