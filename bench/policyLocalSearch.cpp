@@ -27,7 +27,7 @@
 #include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/core/InputError.hpp"
 #include "passageMesh/core/ParallelFor.hpp"
-#include "passageMesh/optimize/Optimizer.hpp"
+#include "passageMesh/policy/ActionSearch.hpp"
 #include "passageMesh/policy/Policy.hpp"
 #include "passageMesh/policy/PolicyEnvironment.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
@@ -43,24 +43,17 @@ struct BoxBest {
 
 BoxBest searchFrom(const EpisodeTask& task, const std::vector<double>& action, int alphaIndex, double lowAlpha,
                    double highAlpha, long budget) {
-  const int n = static_cast<int>(action.size());
-  BoxProblem box;
-  box.lower = Eigen::VectorXd::Constant(n, -1.0);
-  box.upper = Eigen::VectorXd::Constant(n, 1.0);
+  BoxProblem box = scaledActionBox(static_cast<int>(action.size()));
   box.lower[alphaIndex] = lowAlpha;
   box.upper[alphaIndex] = highAlpha;
-  Eigen::VectorXd start(n);
-  for (int k = 0; k < n; ++k) start[k] = std::clamp(action[static_cast<std::size_t>(k)], box.lower[k], box.upper[k]);
-  OptimizerOptions options;
-  options.budget = budget;
-  options.threads = 1;
-  options.start = start;
-  const BatchObjective objective = [&](const std::vector<Eigen::VectorXd>& points) {
-    std::vector<double> rewards;
-    for (const Eigen::VectorXd& p : points) rewards.push_back(task.reward(std::vector<double>(p.data(), p.data() + n)));
-    return rewards;
+  std::vector<double> start = action;
+  start[static_cast<std::size_t>(alphaIndex)] = std::clamp(start[static_cast<std::size_t>(alphaIndex)], lowAlpha, highAlpha);
+  const PointObjective reward = [&task](const Eigen::VectorXd& x) {
+    return task.reward(std::vector<double>(x.data(), x.data() + x.size()));
   };
-  const OptimizationResult result = optimize(box, objective, options);
+  // One thread per search: the passages already run side by side.
+  const OptimizationResult result =
+      searchActions(box, start, evaluateInParallel(reward, 1), budget, 1, OptimizerOptions{}.patternSearchShare);
   return {result.bestValue, (result.best[alphaIndex] + 1) / 2};
 }
 
