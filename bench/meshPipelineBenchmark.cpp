@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "TutorialPassage.hpp"
+#include "passageMesh/core/HeapRetention.hpp"
 #include "passageMesh/mesh/HohMesh.hpp"
 #include "passageMesh/passage/PassageSampler.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
@@ -147,6 +148,7 @@ int digest(int passages, std::uint64_t seed, bool list) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  retainFreedHeapMemory();  // as every utility does (runUtility): the tools' timing
   if (argc > 1 && std::strcmp(argv[1], "digest") == 0)
     return digest(argc > 2 ? std::max(0, std::atoi(argv[2])) : 50,
                   argc > 3 ? std::strtoull(argv[3], nullptr, 10) : 20261203,

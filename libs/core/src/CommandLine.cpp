@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "passageMesh/core/HeapRetention.hpp"
 #include "passageMesh/core/InputError.hpp"
 
 namespace passageMesh {
@@ -54,6 +55,7 @@ bool CommandLine::parse(int argc, const char* const argv[]) {
 }
 
 int runUtility(const std::string& utilityName, const std::function<int()>& body) {
+  retainFreedHeapMemory();
   try {
     return body();
   } catch (const std::exception& e) {

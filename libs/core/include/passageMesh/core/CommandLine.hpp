@@ -33,7 +33,8 @@ class CommandLine {
 };
 
 // Runs a utility's body and turns every failure into a one-line message on stderr,
-// "UTILITY: error: WHAT", and exit code 1. The body returns the exit code.
+// "UTILITY: error: WHAT", and exit code 1. The body returns the exit code. First it
+// keeps freed memory for reuse (HeapRetention.hpp), as every utility repeats allocations.
 int runUtility(const std::string& utilityName, const std::function<int()>& body);
 
 const char* passageMeshVersion();
