@@ -8,7 +8,9 @@
 // OUT.csv of an earlier run on the same SEED, COUNT, BUDGET and EDGE_RADII) the CMA-ES
 // searches are not run again: their bests do not depend on the policy (CMA-ES starts at
 // the defaults with seed 1), so each passage's best is the larger of the file's bestQ and
-// this one-shot Q, as the search would give. With BUDGET > 0, CMA-ES
+// this one-shot Q, as the search would give. An ensemble's one shot is policyMesh's: its
+// mean action, or where that mesh is invalid its members' own actions in turn
+// (Policy::actionsInTurn; the bound counts below are the mean action's). With BUDGET > 0, CMA-ES
 // (iterOptimize's default method) searches each passage's meshing parameters from the
 // defaults with that many meshes; the ratio is one-shot Q / that best. Prints a summary,
 // for a policy how often each action sits at a bound of its range (|a| >= 0.98 in scaled
@@ -81,10 +83,12 @@ int main(int argc, char* argv[]) {
     for (int i = 0; i < count; ++i) {
       const EpisodeTask task = environment.draw(seed, static_cast<std::uint64_t>(i), EpisodePurpose::validation);
       std::vector<double> action = environment.defaultAction();
+      std::vector<PolicyAction> inTurn;
       if (policy) {
         PolicyState s;
         std::copy(task.state.begin(), task.state.end(), s.begin());
-        const PolicyAction a = policy->act(s);
+        inTurn = policy->actionsInTurn(s);
+        const PolicyAction& a = inTurn.front();
         action.assign(a.begin(), a.end());
         for (int k = 0; k < policyActionSize; ++k) {
           atLower[static_cast<std::size_t>(k)] += a[static_cast<std::size_t>(k)] <= -atBound;
@@ -93,6 +97,9 @@ int main(int argc, char* argv[]) {
       }
       Row& row = rows[static_cast<std::size_t>(i)];
       row.oneShot = task.reward(action);
+      // as policyMesh: where the mean action's mesh is invalid, the members' own in turn
+      for (std::size_t m = 1; m < inTurn.size() && row.oneShot <= -1; ++m)
+        row.oneShot = task.reward(std::vector<double>(inTurn[m].begin(), inTurn[m].end()));
       if (!earlierBests.empty()) {
         row.best = std::max(row.oneShot, earlierBests[static_cast<std::size_t>(i)]);
       } else if (budget > 0) {

@@ -11,6 +11,7 @@
 #include <iterator>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "../TestFiles.hpp"
 #include "passageMesh/blade/BladeSampler.hpp"
@@ -83,6 +84,16 @@ TEST(Policy, AnEnsemblesActionIsTheMeanOfItsMembersActions) {
   // A member alone acts as its own file does.
   const Policy onlyA = Policy::load(writeEnsemble(dir, "onlyA.xml", "a/policy.xml"));
   for (int n = 0; n < 3; ++n) EXPECT_EQ(onlyA.act(someState(n)), a.act(someState(n)));
+
+  // The actions policyMesh tries in turn: the mean, then each member's own; a single
+  // actor (or an ensemble of one) has only its own.
+  const std::vector<PolicyAction> inTurn = both.actionsInTurn(someState(7));
+  ASSERT_EQ(inTurn.size(), 3u);
+  EXPECT_EQ(inTurn[0], both.act(someState(7)));
+  EXPECT_EQ(inTurn[1], a.act(someState(7)));
+  EXPECT_EQ(inTurn[2], b.act(someState(7)));
+  EXPECT_EQ(a.actionsInTurn(someState(7)), std::vector<PolicyAction>{a.act(someState(7))});
+  EXPECT_EQ(onlyA.actionsInTurn(someState(7)).size(), 1u);
 }
 
 TEST(Policy, AnIllFormedEnsembleIsRefusedWithItsFileNamed) {
@@ -156,4 +167,10 @@ TEST(Policy, APolicyWithoutTheSplitsInItsActionMeshesWithThemAtZero) {
   EXPECT_EQ(m[8], y[8]);
   EXPECT_EQ(m[9], y[9]);
   EXPECT_NE(y[8], 0.0);
+  // Tried on its own (policyMesh's turn after the mean), the eight-action member gives
+  // the splits at 0, as alone.
+  const std::vector<PolicyAction> inTurn = mixed.actionsInTurn(s);
+  ASSERT_EQ(inTurn.size(), 3u);
+  EXPECT_EQ(inTurn[1], x);
+  EXPECT_EQ(inTurn[2], y);
 }

@@ -1,7 +1,9 @@
 // policyMesh: meshes a blade passage in one shot with a trained policy (issue 12,
 // docs/policy.md): one forward pass of the actor (of each member of an ensemble, whose
 // actions are averaged) maps the blade and the condition to the meshing parameters, then
-// the HOH mesh is built, written and measured in the same run. -polish: the O-block's
+// the HOH mesh is built, written and measured in the same run. Where an ensemble's mean
+// action gives an invalid mesh, its members' own actions are tried in turn and the first
+// valid mesh is kept (Policy::actionsInTurn). -polish: the O-block's
 // polish as in ellipticMesh; Ctrl-C ends it early, the mesh is written with the polish so
 // far and the exit code is 130.
 //   reads  constant/bladeParameters.xml, system/passageDict.xml, the policy
@@ -14,9 +16,11 @@
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/core/InterruptFlag.hpp"
+#include "passageMesh/mesh/HohMesh.hpp"
 #include "passageMesh/passage/PassageCase.hpp"
 #include "passageMesh/policy/Policy.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
@@ -45,8 +49,17 @@ int main(int argc, char* argv[]) {
     const auto start = std::chrono::steady_clock::now();
     const PolicyState state = policy.state(blade, input.condition);
     for (const auto& w : stateOutsideTraining(state)) std::cerr << "policyMesh: warning: " << w << "\n";
-    input.parameters = meshingParametersOf(policy.act(state), blade.chord);
+    const std::vector<PolicyAction> actions = policy.actionsInTurn(state);
+    input.parameters = meshingParametersOf(actions.front(), blade.chord);
     const double forwardSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // An ensemble whose mean action folds the mesh falls back on its members' own actions,
+    // in turn (Policy::actionsInTurn); the mesh kept is built again below and written.
+    for (std::size_t i = 1; i < actions.size() && !buildHohMesh(input.blade, input.condition, input.parameters).valid;
+         ++i) {
+      std::printf("policyMesh: the mesh of the members' mean action is invalid; member %zu's own action instead\n",
+                  i);
+      input.parameters = meshingParametersOf(actions[i], blade.chord);
+    }
 
     writeMeshDict(cli.caseDir() / "system" / "meshDict.xml", input.parameters);
     const std::string members =

@@ -277,29 +277,55 @@ Policy::Actor Policy::Actor::load(const Dictionary& d, const std::filesystem::pa
   return a;
 }
 
-PolicyAction Policy::act(const PolicyState& state) const {
+namespace {
+
+// A member without the splits knows nothing of them: where no member has an action (a
+// policy written before the splits), the method's outer loop.
+const PolicyAction& actionWithoutSplits() {
+  static const PolicyAction withoutSplits = policyAction(MeshingParameters{}, 1.0);
+  return withoutSplits;
+}
+
+}  // namespace
+
+std::vector<Policy::MemberAction> Policy::memberActions(const PolicyState& state) const {
   torch::NoGradGuard noGrad;
   PolicyBatch s(1, policyStateSize);
   for (int k = 0; k < policyStateSize; ++k) s(0, k) = state[k];
   const torch::Tensor input = tensorOf(s);
-  PolicyAction action{};
-  std::array<int, policyActionSize> members{};  // how many members give each action
+  std::vector<MemberAction> actions;
   std::vector<Actor>& actors = members_->actors;  // forward() is not const in LibTorch
   for (Actor& actor : actors) {
     const PolicyBatch a = batchOf(actor.network->forward(input));
-    for (int k = 0; k < actor.layout.actionSize; ++k) {
-      action[k] += a(0, k);
+    MemberAction member{actionWithoutSplits(), actor.layout.actionSize};
+    for (int k = 0; k < actor.layout.actionSize; ++k) member.action[k] = a(0, k);
+    actions.push_back(member);
+  }
+  return actions;
+}
+
+PolicyAction Policy::act(const PolicyState& state) const {
+  PolicyAction action{};
+  std::array<int, policyActionSize> members{};  // how many members give each action
+  for (const MemberAction& member : memberActions(state)) {
+    for (int k = 0; k < member.size; ++k) {
+      action[k] += member.action[k];
       ++members[k];
     }
   }
   // Each action is the mean over the members that have it: a member trained without the
-  // splits knows nothing of them, so it does not pull them to 0 in a mixed ensemble. Where
-  // no member has an action (a policy without the splits): the method's outer loop. A
-  // single actor's action is exactly as its network gives it (x / 1 == x).
-  static const PolicyAction withoutSplits = policyAction(MeshingParameters{}, 1.0);
+  // splits does not pull them to 0 in a mixed ensemble. A single actor's action is exactly
+  // as its network gives it (x / 1 == x).
   for (int k = 0; k < policyActionSize; ++k)
-    action[k] = members[k] > 0 ? action[k] / members[k] : withoutSplits[k];
+    action[k] = members[k] > 0 ? action[k] / members[k] : actionWithoutSplits()[k];
   return action;
+}
+
+std::vector<PolicyAction> Policy::actionsInTurn(const PolicyState& state) const {
+  std::vector<PolicyAction> actions{act(state)};
+  if (memberCount() > 1)
+    for (const MemberAction& member : memberActions(state)) actions.push_back(member.action);
+  return actions;
 }
 
 PolicyState Policy::state(const BladeParameters& blade, const PassageCondition& condition) const {

@@ -47,6 +47,12 @@ class Policy {
   Policy& operator=(Policy&&) noexcept;
 
   PolicyAction act(const PolicyState& state) const;  // one forward pass per member, no noise
+  // The actions to mesh with, in turn, until one mesh is valid: act(state) first, then
+  // (an ensemble's) each member's own action in the members' order, a member without the
+  // splits giving them at 0. Why: the mean of the members' actions can fold a passage that
+  // each member alone meshes (docs/policy.md "Members' own actions where the mean folds").
+  // A single actor's list is act(state) alone.
+  std::vector<PolicyAction> actionsInTurn(const PolicyState& state) const;
   // The passage's state under this policy's own scaling (its file's <stateScale>).
   PolicyState state(const BladeParameters& blade, const PassageCondition& condition) const;
   const PolicyStateScaling& stateScaling() const;
@@ -61,6 +67,13 @@ class Policy {
 
  private:
   Policy();
+  // A member's own action (the entries from `size` on, which it lacks, at the method's
+  // outer loop's) and how many of the actions its network gives.
+  struct MemberAction {
+    PolicyAction action;
+    int size;
+  };
+  std::vector<MemberAction> memberActions(const PolicyState& state) const;
   struct Actor;
   struct Members;
   std::unique_ptr<Members> members_;
