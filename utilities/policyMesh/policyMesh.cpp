@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "passageMesh/core/CommandLine.hpp"
@@ -53,12 +54,13 @@ int main(int argc, char* argv[]) {
     input.parameters = meshingParametersOf(actions.front(), blade.chord);
     const double forwardSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // An ensemble whose mean action folds the mesh falls back on its members' own actions,
-    // in turn (Policy::actionsInTurn); the mesh kept is built again below and written.
-    for (std::size_t i = 1; i < actions.size() && !buildHohMesh(input.blade, input.condition, input.parameters).valid;
-         ++i) {
+    // in turn (Policy::actionsInTurn); the mesh kept is the one written.
+    HohMesh built = buildHohMesh(input.blade, input.condition, input.parameters);
+    for (std::size_t i = 1; i < actions.size() && !built.valid; ++i) {
       std::printf("policyMesh: the mesh of the members' mean action is invalid; member %zu's own action instead\n",
                   i);
       input.parameters = meshingParametersOf(actions[i], blade.chord);
+      built = buildHohMesh(input.blade, input.condition, input.parameters);
     }
 
     writeMeshDict(cli.caseDir() / "system" / "meshDict.xml", input.parameters);
@@ -73,7 +75,7 @@ int main(int argc, char* argv[]) {
 
     const bool polish = cli.values().count("polish") > 0;
     const std::atomic<bool>* stop = polish ? &installInterruptFlag() : nullptr;
-    const MeshedCase meshed = meshCaseAndWrite(input, cli.caseDir(), "policyMesh", polish, stop);
+    const MeshedCase meshed = meshCaseAndWrite(input, std::move(built), cli.caseDir(), "policyMesh", polish, stop);
     const HohMesh& hoh = meshed.hoh;
     const MeshQuality q = computeMeshQuality(hoh.mesh);
     std::printf("policyMesh: Q = %.17g (min Q_J %.6f, mean Q_J %.6f, min Q_S %.6f, mean Q_S %.6f)\n", q.Q,

@@ -304,10 +304,12 @@ std::vector<Policy::MemberAction> Policy::memberActions(const PolicyState& state
   return actions;
 }
 
-PolicyAction Policy::act(const PolicyState& state) const {
+PolicyAction Policy::act(const PolicyState& state) const { return meanAction(memberActions(state)); }
+
+PolicyAction Policy::meanAction(const std::vector<MemberAction>& memberActions) {
   PolicyAction action{};
   std::array<int, policyActionSize> members{};  // how many members give each action
-  for (const MemberAction& member : memberActions(state)) {
+  for (const MemberAction& member : memberActions) {
     for (int k = 0; k < member.size; ++k) {
       action[k] += member.action[k];
       ++members[k];
@@ -322,9 +324,10 @@ PolicyAction Policy::act(const PolicyState& state) const {
 }
 
 std::vector<PolicyAction> Policy::actionsInTurn(const PolicyState& state) const {
-  std::vector<PolicyAction> actions{act(state)};
-  if (memberCount() > 1)
-    for (const MemberAction& member : memberActions(state)) actions.push_back(member.action);
+  const std::vector<MemberAction> members = memberActions(state);  // one forward pass each
+  std::vector<PolicyAction> actions{meanAction(members)};
+  if (members.size() > 1)
+    for (const MemberAction& member : members) actions.push_back(member.action);
   return actions;
 }
 

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/mesh/MeshStatistics.hpp"
@@ -14,9 +15,15 @@ namespace passageMesh {
 
 MeshedCase meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& dir,
                             const std::string& tool, bool polish, const std::atomic<bool>* stopPolish) {
+  return meshCaseAndWrite(input, buildHohMesh(input.blade, input.condition, input.parameters), dir, tool, polish,
+                          stopPolish);
+}
+
+MeshedCase meshCaseAndWrite(const PassageCase& input, HohMesh built, const std::filesystem::path& dir,
+                            const std::string& tool, bool polish, const std::atomic<bool>* stopPolish) {
   const PassageCondition& condition = input.condition;
   const MeshingParameters& parameters = input.parameters;
-  MeshedCase meshed{buildHohMesh(input.blade, condition, parameters)};
+  MeshedCase meshed{std::move(built)};
   HohMesh& hoh = meshed.hoh;
   const EllipticReport& s = hoh.smoothing;
   if (s.iterations > 0)

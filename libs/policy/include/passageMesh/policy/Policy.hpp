@@ -74,6 +74,7 @@ class Policy {
     int size;
   };
   std::vector<MemberAction> memberActions(const PolicyState& state) const;
+  static PolicyAction meanAction(const std::vector<MemberAction>& members);
   struct Actor;
   struct Members;
   std::unique_ptr<Members> members_;

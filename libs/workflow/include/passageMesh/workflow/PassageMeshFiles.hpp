@@ -25,6 +25,11 @@ struct MeshedCase {
 MeshedCase meshCaseAndWrite(const PassageCase& input, const std::filesystem::path& caseDir,
                             const std::string& tool, bool polish = false,
                             const std::atomic<bool>* stopPolish = nullptr);
+// The same with the mesh of input's parameters already built (buildHohMesh), for a tool
+// that built it to choose among parameters (policyMesh's ensemble fallback).
+MeshedCase meshCaseAndWrite(const PassageCase& input, HohMesh built, const std::filesystem::path& caseDir,
+                            const std::string& tool, bool polish = false,
+                            const std::atomic<bool>* stopPolish = nullptr);
 
 // The help of the `-polish` option of the tools that call meshCaseAndWrite.
 inline constexpr const char* polishOptionHelp =
