@@ -15,7 +15,6 @@
 
 #include "../TestFiles.hpp"
 #include "passageMesh/blade/BladeSampler.hpp"
-#include "passageMesh/core/EtcFiles.hpp"
 #include "passageMesh/core/InputError.hpp"
 
 using namespace passageMesh;
@@ -127,11 +126,12 @@ TEST(Policy, AnIllFormedEnsembleIsRefusedWithItsFileNamed) {
   expectError(dir / "a" / "withMembers.xml", "<members> belongs to an ensemble's file");
 }
 
-// A policy written before the splits were meshing parameters (the shipped ensemble's
-// members, 2026-12-06) has the method's eight actions; it is still read, and its meshes
-// have the splits at 0, the method's outer loop, exactly.
+// A policy written before the splits were meshing parameters (tests/policy/data/eightActions:
+// a shipped member from 2026-12-04 to 2026-12-07) has the method's eight actions; it is still
+// read, and its meshes have the splits at 0, the method's outer loop, exactly.
 TEST(Policy, APolicyWithoutTheSplitsInItsActionMeshesWithThemAtZero) {
-  const Policy old = Policy::load(findEtcFile("policy/seed1/policy.xml"));
+  const fs::path eightActions = fs::path(PASSAGEMESH_SOURCE_DIR) / "tests" / "policy" / "data" / "eightActions";
+  const Policy old = Policy::load(eightActions / "policy.xml");
   EXPECT_EQ(old.layout().actionSize, MeshingParameters::methodSize);
   BladeSampler sampler(BladeParameterRange::readDefault(), 5);
   const BladeParameters blade = sampler.next();
@@ -158,7 +158,7 @@ TEST(Policy, APolicyWithoutTheSplitsInItsActionMeshesWithThemAtZero) {
   // splits are the ten-action member's alone (the other knows nothing of them).
   fs::create_directories(dir / "old");
   for (const char* file : {"policy.xml", "policy.pt"})
-    fs::copy_file(findEtcFile(std::string("policy/seed1/") + file), dir / "old" / file,
+    fs::copy_file(eightActions / file, dir / "old" / file,
                   fs::copy_options::overwrite_existing);
   const Policy mixed = Policy::load(writeEnsemble(dir, "mixed.xml", "old/policy.xml ten/policy.xml"));
   const PolicyState s = old.state(blade, condition);

@@ -233,56 +233,29 @@ TEST(PolicyTrainOptions, TheShippedTrainingDictionaryReadsAndStartsAtItsStartFil
   EXPECT_NE(o.actorStartParameters.toArray(), MeshingParameters::defaults(1.0).toArray());
 }
 
-// The dictionaries that trained the shipped ensemble's members (etc/policy/*/) still read,
-// with the settings their README names.
-TEST(PolicyTrainOptions, TheShippedMembersTrainingDictionariesRead) {
-  const std::filesystem::path policies = std::filesystem::path(PASSAGEMESH_SOURCE_DIR) / "etc" / "policy";
-  const PolicyTrainOptions seed3 = readPolicyTrainDict(policies / "seed3" / "policyTrainDict.xml");
-  EXPECT_EQ(seed3.seed, 3u);
-  EXPECT_TRUE(seed3.actorTrainedActions.empty());
-  const PolicyTrainOptions a = readPolicyTrainDict(policies / "seed3splits" / "policyTrainDict-A.xml");
-  const PolicyTrainOptions b = readPolicyTrainDict(policies / "seed3splits" / "policyTrainDict-B.xml");
-  const std::vector<int> splits{8, 9};
-  EXPECT_EQ(a.actorTrainedActions, splits);
-  EXPECT_EQ(a.actorUpdatesFrom, 10000);
-  EXPECT_EQ(a.wideNoiseShare, 0.0);
-  EXPECT_EQ(a.episodes, 24416);
-  EXPECT_EQ(b.actorTrainedActions, splits);
-  EXPECT_EQ(b.wideNoiseActions, splits);
-  EXPECT_EQ(b.wideNoiseShare, 0.3);
-  EXPECT_EQ(b.episodes, 42016);
-  // B continues A's run: everything that decides the weights is A's but the wide noise.
-  auto withoutWideNoise = [](PolicyTrainOptions o) {
-    o.wideNoiseShare = 0;
-    o.wideNoiseSigma = PolicyTrainOptions{}.wideNoiseSigma;
-    o.wideNoiseActions.clear();
-    return trajectorySettings(o);
-  };
-  EXPECT_EQ(withoutWideNoise(a), withoutWideNoise(b));
-  EXPECT_EQ(seed3.seed, a.seed);
-}
-
-// The third member is the two-stage tutorial's recipe with seed 2 (docs/policy.md "The shipped
-// policy: three members"): its dictionaries must say exactly that, or the recorded command would
-// not reproduce it.
-TEST(PolicyTrainOptions, TheThirdMembersDictionariesAreTheTwoStageRecipeWithSeed2) {
+// The shipped ensemble's members are the two-stage tutorial's recipe with seeds 1, 2 and 3
+// (docs/policy.md "The shipped policy", tutorials/policyTrainEnsemble): the dictionaries
+// beside each must say exactly that, or the recorded command would not reproduce it.
+TEST(PolicyTrainOptions, TheShippedMembersDictionariesAreTheTwoStageRecipeWithTheirSeeds) {
   const std::filesystem::path source(PASSAGEMESH_SOURCE_DIR);
-  const std::filesystem::path member = source / "etc" / "policy" / "seed2critic2";
   const std::filesystem::path recipe = source / "tutorials" / "policyTrainTwoStage";
   const std::vector<std::pair<std::string, std::string>> stages{
       {"policyTrainDict-stage1.xml", "stage1"}, {"policyTrainDict-A.xml", "stage2A"}, {"policyTrainDict-B.xml", "stage2B"}};
-  for (const auto& [memberDict, recipeFolder] : stages) {
-    SCOPED_TRACE(memberDict);
-    // (the reader gives the defaults for a missing file: both must exist)
-    const std::filesystem::path recipeDict = recipe / recipeFolder / "system" / "policyTrainDict.xml";
-    ASSERT_TRUE(std::filesystem::exists(member / memberDict));
-    ASSERT_TRUE(std::filesystem::exists(recipeDict));
-    const PolicyTrainOptions shipped = readPolicyTrainDict(member / memberDict);
-    PolicyTrainOptions expected = readPolicyTrainDict(recipeDict);
-    EXPECT_EQ(shipped.criticUpdatesPerEpisode, recipeFolder == "stage1" ? 2 : 1);
-    expected.seed = 2;
-    EXPECT_EQ(shipped.seed, 2u);
-    EXPECT_EQ(trajectorySettings(shipped), trajectorySettings(expected));
-    EXPECT_EQ(shipped.episodes, expected.episodes);
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    const std::filesystem::path member = source / "etc" / "policy" / ("seed" + std::to_string(seed) + "critic2");
+    for (const auto& [memberDict, recipeFolder] : stages) {
+      SCOPED_TRACE(member.filename().string() + "/" + memberDict);
+      // (the reader gives the defaults for a missing file: both must exist)
+      const std::filesystem::path recipeDict = recipe / recipeFolder / "system" / "policyTrainDict.xml";
+      ASSERT_TRUE(std::filesystem::exists(member / memberDict));
+      ASSERT_TRUE(std::filesystem::exists(recipeDict));
+      const PolicyTrainOptions shipped = readPolicyTrainDict(member / memberDict);
+      PolicyTrainOptions expected = readPolicyTrainDict(recipeDict);
+      EXPECT_EQ(shipped.criticUpdatesPerEpisode, recipeFolder == "stage1" ? 2 : 1);
+      expected.seed = seed;
+      EXPECT_EQ(shipped.seed, seed);
+      EXPECT_EQ(trajectorySettings(shipped), trajectorySettings(expected));
+      EXPECT_EQ(shipped.episodes, expected.episodes);
+    }
   }
 }
