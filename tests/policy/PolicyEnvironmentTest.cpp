@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "passageMesh/quality/MeshQuality.hpp"
+#include "passageMesh/workflow/MeshQualityObjective.hpp"
 
 using namespace passageMesh;
 
@@ -26,4 +28,24 @@ TEST(PassageEnvironment, AsAskedTrainingMeshesScoreMinusOneWherePolicyMeshMovesT
   const std::vector<double> defaults = product.defaultAction();
   EXPECT_EQ(asAsked.draw(20261202, 6, EpisodePurpose::training).reward(defaults),
             product.draw(20261202, 6, EpisodePurpose::training).reward(defaults));
+}
+
+// passage() is the blade and condition draw() meshes: the same state, and an action's
+// reward is the quality of that case's mesh at the action's meshing parameters.
+TEST(PassageEnvironment, APassageIsTheBladeAndConditionItsEpisodeDraws) {
+  const PassageEnvironment environment;
+  for (const std::uint64_t episode : {0, 3, 17}) {
+    const EpisodeTask task = environment.draw(20261202, episode, EpisodePurpose::validation);
+    const PassageCase passage = environment.passage(20261202, episode);
+    const PolicyState state = policyState(passage.blade.parameters(), passage.condition, environment.stateScaling());
+    EXPECT_EQ(task.state, std::vector<double>(state.begin(), state.end())) << episode;
+    const std::vector<double> defaults = environment.defaultAction();
+    PolicyAction action{};
+    std::copy(defaults.begin(), defaults.end(), action.begin());
+    EXPECT_EQ(task.reward(defaults),
+              meshQualityOf(passage, meshingParametersOf(action, passage.blade.parameters().chord)))
+        << episode;
+  }
+  // Another episode is another passage.
+  EXPECT_NE(environment.passage(20261202, 0).condition.pitch, environment.passage(20261202, 1).condition.pitch);
 }

@@ -50,6 +50,8 @@ before="$(md5sum < "$ensemble/policy.xml")"
 
 "$ensemble/Allrun" -seeds "1 3" > "$work/other.out" 2>&1 && fail "other seeds in the same case were not refused"
 grep -q "this case's members are seeds '1 2'" "$work/other.out" || { cat "$work/other.out"; fail "no clear error for other seeds"; }
+"$ensemble/Allrun" -seeds "2 1 2" > "$work/twice.out" 2>&1 && fail "a seed named twice was not refused"
+grep -q "names seed 2 twice" "$work/twice.out" || { cat "$work/twice.out"; fail "no clear error for a seed named twice"; }
 "$recipe/Allrun" -seed 2 > "$work/noCase.out" 2>&1 && fail "-seed without -case was not refused"
 "$recipe/Allrun" -case "$ensemble/seed1" -seed 2 > "$work/wrongSeed.out" 2>&1 && fail "a seed-1 case run as seed 2 was not refused"
 grep -q "has <seed>1, not 2" "$work/wrongSeed.out" || { cat "$work/wrongSeed.out"; fail "no clear error for a case of another seed"; }

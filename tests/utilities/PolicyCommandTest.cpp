@@ -2,9 +2,13 @@
 // bad input.
 #include <gtest/gtest.h>
 
+#include <regex>
+#include <sstream>
+
 #include "../blade/BladeTestData.hpp"
 #include "UtilityTestSupport.hpp"
 #include "passageMesh/blade/BladeParametersFile.hpp"
+#include "passageMesh/policy/PolicyEnvironment.hpp"
 
 using namespace passageMesh;
 using namespace passageMesh::testData;
@@ -192,4 +196,51 @@ TEST(PolicyMeshCommand, MeshesWithATrainedPolicyAndRefusesBadPolicyFiles) {
   writeText(badScale / "final.xml", xml);
   fs::copy_file(trained / "policy" / "final.pt", badScale / "final.pt");
   refused("badStateScale", (badScale / "final.xml").string(), "<stateScale> expects 24 words");
+}
+
+// The shipped ensemble's mean action folds validation passage 3 (policyTrain's stream
+// 20261202), which a member's own action meshes (docs/policy.md "Members' own actions where
+// the mean folds"): policyMesh says so and keeps that member's mesh, the one the member
+// alone gives.
+TEST(PolicyMeshCommand, FallsBackOnAMembersOwnActionWhereTheShippedEnsemblesMeanFolds) {
+  const PassageCase passage = PassageEnvironment().passage(20261202, 3);
+  const auto passageCase = [&](const std::string& name) {
+    const fs::path dir = freshCase(name);
+    writeBladeParametersFile(dir / "constant" / "bladeParameters.xml", passage.blade.parameters(), {});
+    const PassageCondition& c = passage.condition;
+    std::ostringstream dict;
+    dict.precision(17);
+    dict << "<passageDict><pitch>" << c.pitch << "</pitch><xIn>" << c.xIn << "</xIn><xOut>" << c.xOut
+         << "</xOut><nO>" << c.nO << "</nO><firstCellHeight>" << c.firstCellHeight
+         << "</firstCellHeight></passageDict>\n";
+    writeText(dir / "system" / "passageDict.xml", dict.str());
+    return dir;
+  };
+  const fs::path shipped = passageCase("policyMeshFallback");
+  const RunResult r = runTool(policyMesh, shipped);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  int member = 0;
+  const std::regex fellBack("member ([0-9]+)'s own action instead");
+  for (std::sregex_iterator m(r.out.begin(), r.out.end(), fellBack), end; m != end; ++m)
+    member = std::stoi((*m)[1]);
+  ASSERT_GT(member, 0) << "the shipped ensemble's mean action meshes validation passage 3: choose a passage "
+                          "where it folds for this test\n" << r.out;
+
+  // The member's own file, from the ensemble's list.
+  const fs::path policies = fs::path(PASSAGEMESH_SOURCE_DIR) / "etc" / "policy";
+  std::smatch listed;
+  const std::string ensemble = readText(policies / "policy.xml");
+  ASSERT_TRUE(std::regex_search(ensemble, listed, std::regex("<members>([^<]*)</members>")));
+  std::istringstream names(listed[1].str());
+  std::string name;
+  for (int i = 0; i < member; ++i) ASSERT_TRUE(static_cast<bool>(names >> name)) << listed[1];
+  const fs::path alone = passageCase("policyMeshFallbackMember");
+  const RunResult m = runTool(policyMesh, alone, "-policy '" + (policies / name).string() + "'");
+  ASSERT_EQ(m.exitCode, 0) << m.err;
+  EXPECT_EQ(m.out.find("own action instead"), std::string::npos) << m.out;
+  EXPECT_EQ(readText(shipped / "system" / "meshDict.xml"), readText(alone / "system" / "meshDict.xml"));
+  const auto qLine = [](const std::string& out) { return out.substr(out.find("policyMesh: Q = ")); };
+  ASSERT_NE(m.out.find("policyMesh: Q = "), std::string::npos) << m.out;
+  EXPECT_EQ(qLine(r.out), qLine(m.out));
+  EXPECT_TRUE(fs::exists(shipped / "mesh" / "passage.cgns"));
 }

@@ -5,7 +5,6 @@
 #include <numbers>
 
 #include "passageMesh/blade/BladeShape.hpp"
-#include "passageMesh/passage/PassageCase.hpp"
 #include "passageMesh/passage/PassageSampler.hpp"
 #include "passageMesh/policy/PolicyScaling.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
@@ -68,14 +67,17 @@ std::vector<double> PassageEnvironment::defaultAction() const {
   return {a.begin(), a.end()};
 }
 
-EpisodeTask PassageEnvironment::draw(std::uint64_t seed, std::uint64_t episode, EpisodePurpose purpose) const {
+PassageCase PassageEnvironment::passage(std::uint64_t seed, std::uint64_t episode) const {
   std::mt19937_64 rng = episodeRandom(seed, episode, 0);
   BladeSampler sampler(range_, rng(), edgeRadii_);
   const BladeParameters blade = sampler.next();
   const PassageCondition condition = sampleCondition(blade.chord, rng);
-  const PolicyState state = policyState(blade, condition, scaling_);
-  auto input = std::make_shared<const PassageCase>(
-      PassageCase{BladeShape(blade), condition, MeshingParameters::defaults(blade.chord)});
+  return PassageCase{BladeShape(blade), condition, MeshingParameters::defaults(blade.chord)};
+}
+
+EpisodeTask PassageEnvironment::draw(std::uint64_t seed, std::uint64_t episode, EpisodePurpose purpose) const {
+  auto input = std::make_shared<const PassageCase>(passage(seed, episode));
+  const PolicyState state = policyState(input->blade.parameters(), input->condition, scaling_);
   EpisodeTask task;
   task.state.assign(state.begin(), state.end());
   const bool asAsked = purpose == EpisodePurpose::training && trainingMeshes_ == TrainingMeshes::asAsked;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "passageMesh/blade/BladeSampler.hpp"
+#include "passageMesh/passage/PassageCase.hpp"
 #include "passageMesh/policy/PolicyScaling.hpp"
 #include "passageMesh/policy/ReplayBuffer.hpp"
 
@@ -81,6 +82,9 @@ class PassageEnvironment final : public PolicyEnvironment {
   int stateSize() const override;
   int actionSize() const override;
   EpisodeTask draw(std::uint64_t seed, std::uint64_t episode, EpisodePurpose purpose) const override;
+  // The blade and condition draw() gives that episode (meshing parameters: the defaults),
+  // e.g. to write a validation passage as a case.
+  PassageCase passage(std::uint64_t seed, std::uint64_t episode) const;
   // The action of etc/meshDictDefaults.xml (the same for every chord).
   std::vector<double> defaultAction() const override;
 
