@@ -3,6 +3,7 @@
 // one-line error, a non-zero exit and no mesh files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -128,6 +129,29 @@ TEST(EllipticMeshCommand, APeriodicBoundaryThroughTheBladeIsAnErrorAndWritesNoth
       << r.err;
   EXPECT_NE(r.out.find("not smoothed"), std::string::npos) << r.out;
   expectNoMesh(dir);
+}
+
+// A write that fails part way (a file size limit here, as a full disk would) ends in one
+// line and exit code 1 and leaves the case's mesh files as they were: the CGNS and VTK
+// files are replaced together or not at all. Before, HDF5's exit handler crashed the tool
+// after its error line (SIGSEGV), and the new mesh's VTK files stood beside the old CGNS.
+TEST(EllipticMeshCommand, AFailedWriteLeavesTheMeshFilesAsTheyWere) {
+  const auto dir = caseWith("limited", passageDict("0.85c"), "<meshDict><nT>150</nT></meshDict>");
+  ASSERT_EQ(runTool(ellipticMesh, dir).exitCode, 0);
+  const std::vector<std::string> files = {"mesh/passage.cgns", "mesh/passage.vtm", "mesh/passage/OBlock.vts"};
+  std::vector<std::string> before;
+  for (const auto& f : files) before.push_back(readText(dir / f));
+  writeText(dir / "system" / "passageDict.xml", passageDict("0.85c", "10000"));
+  // SIGXFSZ ignored: a write past the limit then fails with EFBIG instead of killing.
+  const RunResult r = runCommand("/bin/sh", "-c \"trap '' XFSZ; ulimit -f 64; exec '" + ellipticMesh +
+                                                "' -case '" + dir.string() + "'\"", dir);
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_EQ(r.err.rfind("ellipticMesh: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("passage.cgns"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  for (std::size_t k = 0; k < files.size(); ++k) EXPECT_EQ(readText(dir / files[k]), before[k]) << files[k];
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir / "mesh"))
+    EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
 }
 
 // -polish: the written mesh is the polished one, with the Q the tool prints, above the

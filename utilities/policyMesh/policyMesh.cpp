@@ -11,7 +11,8 @@
 //   writes system/meshDict.xml (the policy's parameters), mesh/passage.cgns,
 //          mesh/passage.vtm + mesh/passage/<block>.vts
 // A condition or blade outside the policy's training ranges gets a warning naming the
-// value. An invalid mesh is an error (exit 1; meshDict.xml is written, the mesh is not).
+// value. An invalid mesh is an error (exit 1; the parameters are printed, nothing is
+// written: meshDict.xml is written with the mesh files, all or none).
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -63,11 +64,10 @@ int main(int argc, char* argv[]) {
       built = buildHohMesh(input.blade, input.condition, input.parameters);
     }
 
-    writeMeshDict(cli.caseDir() / "system" / "meshDict.xml", input.parameters);
     const std::string members =
         policy.memberCount() > 1 ? "an ensemble of " + std::to_string(policy.memberCount()) + " trained in " : "";
     std::printf("policyMesh: policy %s (%s%ld episodes), forward pass %.3f ms (the first: LibTorch starting up); meshing parameters "
-                "(yIn, yOut in metres) written to system/meshDict.xml:\n",
+                "(yIn, yOut in metres; written to system/meshDict.xml with the mesh):\n",
                 policyFile.c_str(), members.c_str(), policy.provenance().episodes, 1e3 * forwardSeconds);
     const auto values = input.parameters.toArray();
     for (int k = 0; k < MeshingParameters::size; ++k)
@@ -75,7 +75,9 @@ int main(int argc, char* argv[]) {
 
     const bool polish = cli.values().count("polish") > 0;
     const std::atomic<bool>* stop = polish ? &installInterruptFlag() : nullptr;
-    const MeshedCase meshed = meshCaseAndWrite(input, std::move(built), cli.caseDir(), "policyMesh", polish, stop);
+    const MeshedCase meshed =
+        meshCaseAndWrite(input, std::move(built), cli.caseDir(), "policyMesh", polish, stop,
+                         {fileWithContent(cli.caseDir() / "system" / "meshDict.xml", meshDictXml(input.parameters))});
     const HohMesh& hoh = meshed.hoh;
     const MeshQuality q = computeMeshQuality(hoh.mesh);
     std::printf("policyMesh: Q = %.17g (min Q_J %.6f, mean Q_J %.6f, min Q_S %.6f, mean Q_S %.6f)\n", q.Q,

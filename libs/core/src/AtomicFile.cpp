@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
@@ -14,49 +16,66 @@ std::filesystem::path temporaryFor(const std::filesystem::path& file) {
   return file.string() + ".tmp" + std::to_string(static_cast<long>(::getpid()));
 }
 
-void writeTemporary(const std::filesystem::path& file, const std::string& content) {
-  namespace fs = std::filesystem;
-  std::error_code ignored;
-  if (file.has_parent_path()) fs::create_directories(file.parent_path(), ignored);
-  const fs::path temporary = temporaryFor(file);
+void writeTemporary(const std::filesystem::path& file, const std::string& content,
+                    const std::filesystem::path& temporary) {
   std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
   out << content;
   out.close();  // flushes: a deferred write error shows here
   if (!out) {
-    fs::remove(temporary, ignored);
-    throw std::runtime_error(file.string() + ": cannot write file");
+    const std::string why = errno != 0 ? std::strerror(errno) : "write error";
+    throw std::runtime_error(file.string() + ": cannot write file (" + why + ")");
   }
 }
 
 }  // namespace
 
-void writeFilesAtomically(
-    const std::vector<std::pair<std::filesystem::path, std::string>>& files) {
+void writeFilesAtomically(const std::vector<FileWriter>& files) {
   namespace fs = std::filesystem;
   std::error_code ignored;
   // A rename fails when its target is a directory (or another non-file): refuse before
   // anything is written. The temporaries sit beside their targets, so the renames cannot
   // fail for crossing file systems, and a directory that takes the temporaries takes the
   // renames: after this check and the writes, the renames go through together.
-  for (const auto& [file, content] : files)
-    if (fs::exists(file) && !fs::is_regular_file(file))
-      throw std::runtime_error(file.string() + ": cannot replace, it is not a regular file");
+  for (const FileWriter& f : files)
+    if (fs::exists(f.file) && !fs::is_regular_file(f.file))
+      throw std::runtime_error(f.file.string() + ": cannot replace, it is not a regular file");
   std::size_t written = 0;
   try {
-    for (; written < files.size(); ++written) writeTemporary(files[written].first, files[written].second);
+    for (; written < files.size(); ++written) {
+      const fs::path& file = files[written].file;
+      if (file.has_parent_path()) fs::create_directories(file.parent_path(), ignored);
+      errno = 0;
+      files[written].write(temporaryFor(file));
+    }
   } catch (...) {
-    for (std::size_t k = 0; k < written; ++k) fs::remove(temporaryFor(files[k].first), ignored);
+    // The one that failed may have left part of its temporary.
+    for (std::size_t k = 0; k <= written && k < files.size(); ++k) fs::remove(temporaryFor(files[k].file), ignored);
     throw;
   }
   for (std::size_t k = 0; k < files.size(); ++k) {
     std::error_code ec;
-    fs::rename(temporaryFor(files[k].first), files[k].first, ec);
+    fs::rename(temporaryFor(files[k].file), files[k].file, ec);
     if (ec) {
       const std::string why = ec.message();
-      for (std::size_t m = k; m < files.size(); ++m) fs::remove(temporaryFor(files[m].first), ignored);
-      throw std::runtime_error(files[k].first.string() + ": cannot replace file (" + why + ")");
+      for (std::size_t m = k; m < files.size(); ++m) fs::remove(temporaryFor(files[m].file), ignored);
+      throw std::runtime_error(files[k].file.string() + ": cannot replace file (" + why + ")");
     }
   }
+}
+
+FileWriter fileWithContent(std::filesystem::path file, std::string content) {
+  FileWriter writer{std::move(file), {}};
+  writer.write = [file = writer.file, content = std::move(content)](const std::filesystem::path& temporary) {
+    writeTemporary(file, content, temporary);
+  };
+  return writer;
+}
+
+void writeFilesAtomically(
+    const std::vector<std::pair<std::filesystem::path, std::string>>& files) {
+  std::vector<FileWriter> writers;
+  for (const auto& [file, content] : files) writers.push_back(fileWithContent(file, content));
+  writeFilesAtomically(writers);
 }
 
 void writeFileAtomically(const std::filesystem::path& file, const std::string& content) {

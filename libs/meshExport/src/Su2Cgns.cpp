@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "passageMesh/core/AtomicFile.hpp"
+#include "passageMesh/structured/CgnsLibrary.hpp"
 
 namespace passageMesh {
 
@@ -17,6 +18,7 @@ namespace {
 class OpenCgns {
  public:
   explicit OpenCgns(const std::filesystem::path& file) : label_(file.string()) {
+    prepareCgnsLibrary();
     call(cg_open(label_.c_str(), CG_MODE_WRITE, &fn_), "open");
   }
   ~OpenCgns() { if (fn_ >= 0) cg_close(fn_); }

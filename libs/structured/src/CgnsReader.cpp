@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/structured/CgnsLibrary.hpp"
 #include "passageMesh/structured/CgnsWriter.hpp"
 
 namespace passageMesh {
@@ -24,6 +25,7 @@ class CgnsInput {
     int type = 0;
     if (cg_is_cgns(file_.c_str(), &type) != CG_OK)
       throw InputError(file_, 0, "not a CGNS file (expected a mesh written by writeCgns)");
+    prepareCgnsLibrary();
     check(cg_open(file_.c_str(), CG_MODE_READ, &fn_), "cannot open");
   }
   ~CgnsInput() { cg_close(fn_); }

@@ -1,7 +1,6 @@
 #include "passageMesh/structured/CgnsWriter.hpp"
 
 #include <cgnslib.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +11,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "passageMesh/structured/CgnsLibrary.hpp"
 
 namespace passageMesh {
 namespace {
@@ -170,6 +171,7 @@ void validateConnection(const StructuredMesh& mesh, const BlockConnection& c, do
 class CgnsFile {
  public:
   CgnsFile(const std::filesystem::path& path, std::string label) : label_(std::move(label)) {
+    prepareCgnsLibrary();
     check(cg_open(path.c_str(), CG_MODE_WRITE, &fn_), "open");
     open_ = true;
   }
@@ -360,24 +362,16 @@ void validateStructuredMesh(const StructuredMesh& mesh) {
   }
 }
 
-void writeCgns(const StructuredMesh& mesh, const std::filesystem::path& file) {
-  namespace fs = std::filesystem;
+FileWriter cgnsFileWriter(const StructuredMesh& mesh, const std::filesystem::path& file) {
   validateStructuredMesh(mesh);
-  std::error_code ec;
-  if (file.has_parent_path()) fs::create_directories(file.parent_path(), ec);
-  const fs::path temporary = file.string() + ".tmp" + std::to_string(static_cast<long>(::getpid()));
-  try {
-    CgnsFile f(temporary, file.string());
-    writeContent(f, mesh);
-  } catch (...) {
-    fs::remove(temporary, ec);
-    throw;
-  }
-  fs::rename(temporary, file, ec);
-  if (ec) {
-    fs::remove(temporary, ec);
-    throw std::runtime_error(file.string() + ": cannot replace file (" + ec.message() + ")");
-  }
+  return {file, [&mesh, label = file.string()](const std::filesystem::path& temporary) {
+            CgnsFile f(temporary, label);
+            writeContent(f, mesh);
+          }};
+}
+
+void writeCgns(const StructuredMesh& mesh, const std::filesystem::path& file) {
+  writeFilesAtomically({cgnsFileWriter(mesh, file)});
 }
 
 }  // namespace passageMesh

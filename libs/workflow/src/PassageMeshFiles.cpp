@@ -20,7 +20,8 @@ MeshedCase meshCaseAndWrite(const PassageCase& input, const std::filesystem::pat
 }
 
 MeshedCase meshCaseAndWrite(const PassageCase& input, HohMesh built, const std::filesystem::path& dir,
-                            const std::string& tool, bool polish, const std::atomic<bool>* stopPolish) {
+                            const std::string& tool, bool polish, const std::atomic<bool>* stopPolish,
+                            std::vector<FileWriter> alsoWrite) {
   const PassageCondition& condition = input.condition;
   const MeshingParameters& parameters = input.parameters;
   MeshedCase meshed{std::move(built)};
@@ -82,10 +83,12 @@ MeshedCase meshCaseAndWrite(const PassageCase& input, HohMesh built, const std::
                   p.kept ? "kept" : "not kept (no step raised Q)",
                   p.interrupted ? "; interrupted (Ctrl-C): the rest of the polish not done" : "");
   }
-  validateStructuredMesh(hoh.mesh);
-  std::filesystem::create_directories(dir / "mesh");
-  writeFilesAtomically(vtmFileContents(hoh.mesh, dir / "mesh" / "passage.vtm"));
-  writeCgns(hoh.mesh, dir / "mesh" / "passage.cgns");
+  // The CGNS file, the VTK files and `alsoWrite` are replaced together or not at all.
+  std::vector<FileWriter> files = std::move(alsoWrite);
+  files.push_back(cgnsFileWriter(hoh.mesh, dir / "mesh" / "passage.cgns"));
+  for (auto& [file, content] : vtmFileContents(hoh.mesh, dir / "mesh" / "passage.vtm"))
+    files.push_back(fileWithContent(file, std::move(content)));
+  writeFilesAtomically(files);
   std::printf("  wrote mesh/passage.cgns, mesh/passage.vtm\n");
   return meshed;
 }

@@ -2,6 +2,7 @@
 // Writing results so that a reader never sees a half-written file: the content goes to a
 // temporary file beside the target, which is then renamed over it (atomic on POSIX).
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,6 +18,20 @@ void writeFileAtomically(const std::filesystem::path& file, const std::string& c
 // while writing leaves every target as it was.
 void writeFilesAtomically(
     const std::vector<std::pair<std::filesystem::path, std::string>>& files);
+
+// A file that a library writes itself (CGNS through its HDF5 layer), as one of the files
+// of writeFilesAtomically: `write` writes the whole file to the path it is given (a
+// temporary beside `file`) and throws when it cannot, naming `file`.
+struct FileWriter {
+  std::filesystem::path file;
+  std::function<void(const std::filesystem::path& temporary)> write;
+};
+
+// The same for files written by FileWriters: all written, then all renamed, or none.
+void writeFilesAtomically(const std::vector<FileWriter>& files);
+
+// The FileWriter that writes `content` to `file`.
+FileWriter fileWithContent(std::filesystem::path file, std::string content);
 
 // Formats a double with 17 significant digits, enough to read back the same value.
 std::string formatExact(double value);

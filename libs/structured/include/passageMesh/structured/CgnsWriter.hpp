@@ -20,6 +20,7 @@
 // type; a second patch of that name in the same zone is written as "name_2", etc.
 #include <filesystem>
 
+#include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/structured/StructuredMesh.hpp"
 
 namespace passageMesh {
@@ -33,6 +34,11 @@ namespace passageMesh {
 // written to a temporary beside it and renamed, so a failure leaves no partial file.
 // Not thread-safe: the CGNS library has global state.
 void writeCgns(const StructuredMesh& mesh, const std::filesystem::path& file);
+
+// What writeCgns writes, as a FileWriter for a tool that writes the CGNS file together
+// with its other outputs (writeFilesAtomically). Checks the mesh now (same exceptions);
+// the mesh must outlive the writer.
+FileWriter cgnsFileWriter(const StructuredMesh& mesh, const std::filesystem::path& file);
 
 // The checks writeCgns makes before it writes anything (same exceptions).
 void validateStructuredMesh(const StructuredMesh& mesh);

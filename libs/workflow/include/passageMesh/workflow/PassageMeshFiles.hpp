@@ -6,7 +6,9 @@
 #include <atomic>
 #include <filesystem>
 #include <string>
+#include <vector>
 
+#include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/mesh/HohMesh.hpp"
 #include "passageMesh/passage/PassageCase.hpp"
 
@@ -26,10 +28,12 @@ MeshedCase meshCaseAndWrite(const PassageCase& input, const std::filesystem::pat
                             const std::string& tool, bool polish = false,
                             const std::atomic<bool>* stopPolish = nullptr);
 // The same with the mesh of input's parameters already built (buildHohMesh), for a tool
-// that built it to choose among parameters (policyMesh's ensemble fallback).
+// that built it to choose among parameters (policyMesh's ensemble fallback); `alsoWrite`
+// (policyMesh's meshDict.xml) is written together with the mesh files, all or none.
 MeshedCase meshCaseAndWrite(const PassageCase& input, HohMesh built, const std::filesystem::path& caseDir,
                             const std::string& tool, bool polish = false,
-                            const std::atomic<bool>* stopPolish = nullptr);
+                            const std::atomic<bool>* stopPolish = nullptr,
+                            std::vector<FileWriter> alsoWrite = {});
 
 // The help of the `-polish` option of the tools that call meshCaseAndWrite.
 inline constexpr const char* polishOptionHelp =
