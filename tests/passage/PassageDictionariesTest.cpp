@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <utility>
 
 #include "../TestFiles.hpp"
 
@@ -81,6 +82,20 @@ TEST(MeshDict, MissingFileGivesDefaultsAndOutOfRangeIsClippedWithAWarning) {
   warnings.clear();
   EXPECT_DOUBLE_EQ(readMeshDict(writeTemp("s.xml", "<meshDict><splitOut>-0.7</splitOut></meshDict>"), 0.1, &warnings).splitOut, -0.5);
   EXPECT_EQ(warnings.size(), 1u);
+}
+
+// An integer beyond int's range is clipped as written, with a warning that shows it (it
+// used to wrap around modulo 2^32: 4294967668 became 372, silently).
+TEST(MeshDict, AnIntegerBeyondIntsRangeIsClippedAsWritten) {
+  for (const auto& [written, clipped] : {std::pair<std::string, int>{"4294967668", 1000},
+                                         {"-4294966924", 100}, {"99999999999999", 1000}}) {
+    std::vector<std::string> warnings;
+    const auto p = readMeshDict(writeTemp("big.xml", "<meshDict><nT>" + written + "</nT></meshDict>"), 0.1, &warnings);
+    EXPECT_EQ(p.nT, clipped) << written;
+    ASSERT_EQ(warnings.size(), 1u) << written;
+    EXPECT_NE(warnings[0].find("<nT> " + written + " is outside [100, 1000], clipped to " +
+                               std::to_string(clipped)), std::string::npos) << warnings[0];
+  }
 }
 
 TEST(MeshDict, WritesAndReadsBack) {

@@ -217,7 +217,7 @@ TEST(PolicyTrainOptions, AnActorStartFileThatCannotBeUsedIsRefusedWithTheLine) {
             std::string::npos);
   const std::string outside = readError(startCase("startOutside", startFromFile, "<betaIn>0.95</betaIn>"));
   EXPECT_NE(outside.find("policyTrainDict.xml:3: the actor's start "), std::string::npos) << outside;
-  EXPECT_NE(outside.find("start.xml: <betaIn> 0.94999999999999996 is outside [0.10000000000000001, 0.90000000000000002]: "
+  EXPECT_NE(outside.find("start.xml: <betaIn> 0.94999999999999996 is outside [0.1, 0.9]: "
                          "the start must lie in the range box"),
             std::string::npos)
       << outside;

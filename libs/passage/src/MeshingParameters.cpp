@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/Dictionary.hpp"
@@ -12,9 +14,10 @@ namespace passageMesh {
 namespace {
 
 // Reads the keys of a meshDict into `p` (those present), lengths scaled by `chord`.
-void readEntries(const Dictionary& dict, double chord, MeshingParameters& p) {
+// Read into doubles, so that an integer far out of range (nT 4294967668) is clipped as
+// written, not after a conversion to int has wrapped it.
+void readEntries(const Dictionary& dict, double chord, std::array<double, MeshingParameters::size>& v) {
   const auto& table = MeshingParameters::table();
-  auto v = p.toArray();
   for (int k = 0; k < MeshingParameters::size; ++k) {
     const MeshingParameterInfo& info = table[k];
     if (!dict.has(info.name)) continue;
@@ -25,7 +28,6 @@ void readEntries(const Dictionary& dict, double chord, MeshingParameters& p) {
     else
       v[k] = dict.scalar(info.name);
   }
-  p = MeshingParameters::fromArray(v);
 }
 
 std::vector<std::string> keys() {
@@ -41,9 +43,9 @@ MeshingParameters MeshingParameters::defaults(double chord) {
     d.require(keys());
     return d;
   }();
-  MeshingParameters p;
-  readEntries(dict, chord, p);
-  return p;
+  std::array<double, MeshingParameters::size> v = MeshingParameters{}.toArray();
+  readEntries(dict, chord, v);
+  return MeshingParameters::fromArray(v);
 }
 
 std::array<double, MeshingParameters::size> MeshingParameters::toArray() const {
@@ -57,7 +59,9 @@ MeshingParameters MeshingParameters::fromArray(const std::array<double, size>& v
   p.alphaCamber = v[2];
   p.betaIn = v[3];
   p.betaOut = v[4];
-  p.nT = static_cast<int>(std::lround(v[5]));
+  // Clamped to int's range first: a conversion of a larger value is undefined.
+  p.nT = static_cast<int>(std::lround(std::clamp(v[5], double(std::numeric_limits<int>::min()),
+                                                 double(std::numeric_limits<int>::max()))));
   p.gammaLe = v[6];
   p.gammaTe = v[7];
   p.splitIn = v[8];
@@ -113,27 +117,44 @@ std::array<double, MeshingParameters::size> MeshingParameters::upperBounds(doubl
   return rangeEnd(chord, &MeshingParameterInfo::upper);
 }
 
-MeshingParameters clipToRange(const MeshingParameters& p, double chord,
-                              std::vector<std::string>* warnings, const std::string& source) {
-  auto v = p.toArray();
+namespace {
+
+// A bound as a reader wants it (0.1, not 0.10000000000000001); the values stay exact.
+std::string rounded(double bound) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", bound);
+  return text;
+}
+
+std::array<double, MeshingParameters::size> clipArrayToRange(std::array<double, MeshingParameters::size> v,
+                                                             double chord, std::vector<std::string>* warnings,
+                                                             const std::string& source) {
   const auto lo = MeshingParameters::lowerBounds(chord), hi = MeshingParameters::upperBounds(chord);
   for (int k = 0; k < MeshingParameters::size; ++k) {
     const double clipped = std::clamp(v[k], lo[k], hi[k]);
     if (clipped != v[k] && warnings)
       warnings->push_back(source + ": <" + MeshingParameters::names()[k] + "> " +
-                          formatExact(v[k]) + " is outside [" + formatExact(lo[k]) + ", " +
-                          formatExact(hi[k]) + "], clipped to " + formatExact(clipped));
+                          formatExact(v[k]) + " is outside [" + rounded(lo[k]) + ", " + rounded(hi[k]) +
+                          "], clipped to " + formatExact(clipped));
     v[k] = clipped;
   }
-  return MeshingParameters::fromArray(v);
+  return v;
+}
+
+}  // namespace
+
+MeshingParameters clipToRange(const MeshingParameters& p, double chord,
+                              std::vector<std::string>* warnings, const std::string& source) {
+  return MeshingParameters::fromArray(clipArrayToRange(p.toArray(), chord, warnings, source));
 }
 
 MeshingParameters readMeshDict(const std::filesystem::path& file, double chord,
                                std::vector<std::string>* warnings) {
-  MeshingParameters p = MeshingParameters::defaults(chord);
-  if (!std::filesystem::exists(file)) return p;
-  readEntries(Dictionary::read(file, "meshDict", keys()), chord, p);
-  return clipToRange(p, chord, warnings, file.string());
+  const MeshingParameters defaults = MeshingParameters::defaults(chord);
+  if (!std::filesystem::exists(file)) return defaults;
+  std::array<double, MeshingParameters::size> v = defaults.toArray();
+  readEntries(Dictionary::read(file, "meshDict", keys()), chord, v);
+  return MeshingParameters::fromArray(clipArrayToRange(v, chord, warnings, file.string()));
 }
 
 std::string meshDictXml(const MeshingParameters& p) {
