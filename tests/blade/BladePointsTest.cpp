@@ -48,3 +48,23 @@ TEST(BladePoints, RefusesCollinearPoints) {
   for (int k = 0; k < 30; ++k) line.emplace_back(k, 2.0 * k);
   EXPECT_THROW(orderBladePoints(setOf(line)), InputError);
 }
+
+// Beyond the sizes the fit computes with, a clear error instead of an overflow (1e300: the
+// fit crashed) or an underflow (1e-155: it returned another shape).
+TEST(BladePoints, RefusesPointsOfNoComputableSize) {
+  const auto loop = BladeShape(testData::typicalTurbineBlade()).sampleLoop(50);
+  const auto message = [&](double scale) {
+    std::vector<Eigen::Vector2d> scaled;
+    for (const auto& p : loop) scaled.push_back(scale * p);
+    try {
+      orderBladePoints(setOf(scaled));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(message(1e300).find("test.dat:1: coordinate beyond +-1e+100"), std::string::npos) << message(1e300);
+  EXPECT_NE(message(1e-155).find("test.dat: the points span"), std::string::npos) << message(1e-155);
+  EXPECT_EQ(message(1e90), "accepted");
+  EXPECT_EQ(message(1e-90), "accepted");
+}

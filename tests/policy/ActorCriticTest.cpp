@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <random>
 
 #include "passageMesh/policy/PolicyNetworks.hpp"
@@ -214,5 +215,24 @@ TEST(ActorCritic, TheBoundedQualityFitsValidMeshesAndStaysInItsRangeFarFromTheDa
     const Eigen::VectorXd v = critic.value(far * s, -far * a);
     EXPECT_LE(v.maxCoeff(), 1.0) << far;
     EXPECT_GE(v.minCoeff(), -1.0) << far;
+  }
+}
+
+// A learner whose critic has diverged (here a NaN reward, one Adam step) is refused when its
+// state is loaded (a checkpoint's networks, or the best validation's learner kept in it),
+// naming the network and the weight: a run resumed from it would only mesh NaN actions.
+TEST(ActorCritic, LoadingADivergedLearnerIsRefusedNamingTheWeight) {
+  const NetworkLayout layout{3, 2, {8}, 0.01};
+  ActorCritic sound(layout, LearningRates{}, 1), diverged(layout, LearningRates{}, 1);
+  const PolicyBatch s = PolicyBatch::Constant(2, 3, 0.1), a = PolicyBatch::Constant(2, 2, 0.2);
+  diverged.updateCritic(s, a, Eigen::VectorXd::Constant(2, std::numeric_limits<double>::quiet_NaN()));
+  ActorCritic target(layout, LearningRates{}, 2);
+  EXPECT_NO_THROW(target.loadStateBytes(sound.stateBytes()));
+  try {
+    target.loadStateBytes(diverged.stateBytes());
+    FAIL() << "a critic with NaN weights was loaded";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("the critic's layers.0.weight holds NaN or infinity"), std::string::npos)
+        << e.what();
   }
 }

@@ -127,6 +127,9 @@ TEST(PolicyTrainOptions, BadValuesNameTheFileAndLine) {
   EXPECT_NE(bad("<batchEpisodes>3000000000</batchEpisodes>").find("must be in [1, 2147483647]"), std::string::npos);
   EXPECT_NE(bad("<minibatch>200</minibatch><bufferCapacity>100</bufferCapacity>").find("never start"),
             std::string::npos);
+  // No validation passages: no best validation, so no policy/policy.xml to ship.
+  EXPECT_NE(bad("<validationPassages>0</validationPassages>").find("bad.xml:2: <validationPassages>"),
+            std::string::npos) << bad("<validationPassages>0</validationPassages>");
 }
 
 TEST(PolicyTrainOptions, EveryEnumeratedSettingReadsBackFromItsWord) {

@@ -2,13 +2,16 @@
 // bad input.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <regex>
 #include <sstream>
 
 #include "../blade/BladeTestData.hpp"
 #include "UtilityTestSupport.hpp"
 #include "passageMesh/blade/BladeParametersFile.hpp"
+#include "passageMesh/policy/Policy.hpp"
 #include "passageMesh/policy/PolicyEnvironment.hpp"
+#include "passageMesh/policy/PolicyNetworks.hpp"
 
 using namespace passageMesh;
 using namespace passageMesh::testData;
@@ -192,6 +195,23 @@ TEST(PolicyMeshCommand, MeshesWithATrainedPolicyAndRefusesBadPolicyFiles) {
   fs::copy_file(policyXml, corrupt / "final.xml");
   writeText(corrupt / "final.pt", "garbage");
   refused("corruptActor", (corrupt / "final.xml").string(), "final.pt");
+
+  // A diverged actor: one weight NaN, the file otherwise sound.
+  const fs::path diverged = trained / "diverged";
+  fs::create_directories(diverged);
+  fs::copy_file(policyXml, diverged / "final.xml");
+  {
+    FullyConnected actor = makeActor(Policy::load(policyXml).layout());
+    torch::serialize::InputArchive in;
+    in.load_from((trained / "policy" / "final.pt").string());
+    actor->load(in);
+    torch::NoGradGuard noGrad;
+    actor->parameters()[2].view(-1)[0] = std::numeric_limits<float>::quiet_NaN();
+    torch::serialize::OutputArchive out;
+    actor->save(out);
+    out.save_to((diverged / "final.pt").string());
+  }
+  refused("divergedActor", (diverged / "final.xml").string(), "final.pt: the actor's layers.2.weight holds NaN");
 
   const fs::path wider = trained / "wider";
   fs::create_directories(wider);

@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "passageMesh/blade/BladeValidity.hpp"
+#include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/InputError.hpp"
 
 namespace passageMesh {
@@ -26,6 +27,25 @@ OrderedBladePoints orderBladePoints(const PointSet& input) {
     throw InputError(input.file, 0,
                      "only " + std::to_string(n) + " distinct points, expected at least " +
                          std::to_string(minimumBladePoints) + " 'x y' points along the profile");
+
+  // Far outside any blade's size the fit's arithmetic overflows or underflows (points
+  // scaled by 1e300 crashed it, by 1e-155 it returned another shape): refused here, before
+  // any norm is taken.
+  Eigen::Vector2d lowest = out.points[0], highest = out.points[0];
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector2d& p = out.points[k];
+    if (p.cwiseAbs().maxCoeff() > maximumBladeCoordinate)
+      throw InputError(input.file, lineOf(k),
+                       "coordinate beyond +-" + formatRounded(maximumBladeCoordinate) +
+                           "; expected blade points in metres");
+    lowest = lowest.cwiseMin(p);
+    highest = highest.cwiseMax(p);
+  }
+  const double size = (highest - lowest).maxCoeff();
+  if (size < minimumBladeSize || size > maximumBladeSize)
+    throw InputError(input.file, 0,
+                     "the points span " + formatRounded(size) + "; expected a blade between " +
+                         formatRounded(minimumBladeSize) + " and " + formatRounded(maximumBladeSize) + " across");
 
   // Exact duplicates (after sorting), reported with both lines.
   std::vector<int> order(n);

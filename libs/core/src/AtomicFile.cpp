@@ -88,4 +88,10 @@ std::string formatExact(double value) {
   return buffer;
 }
 
+std::string formatRounded(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
+}
+
 }  // namespace passageMesh

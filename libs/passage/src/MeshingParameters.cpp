@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 #include "passageMesh/core/AtomicFile.hpp"
@@ -119,13 +118,6 @@ std::array<double, MeshingParameters::size> MeshingParameters::upperBounds(doubl
 
 namespace {
 
-// A bound as a reader wants it (0.1, not 0.10000000000000001); the values stay exact.
-std::string rounded(double bound) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", bound);
-  return text;
-}
-
 std::array<double, MeshingParameters::size> clipArrayToRange(std::array<double, MeshingParameters::size> v,
                                                              double chord, std::vector<std::string>* warnings,
                                                              const std::string& source) {
@@ -134,7 +126,7 @@ std::array<double, MeshingParameters::size> clipArrayToRange(std::array<double, 
     const double clipped = std::clamp(v[k], lo[k], hi[k]);
     if (clipped != v[k] && warnings)
       warnings->push_back(source + ": <" + MeshingParameters::names()[k] + "> " +
-                          formatExact(v[k]) + " is outside [" + rounded(lo[k]) + ", " + rounded(hi[k]) +
+                          formatExact(v[k]) + " is outside [" + formatRounded(lo[k]) + ", " + formatRounded(hi[k]) +
                           "], clipped to " + formatExact(clipped));
     v[k] = clipped;
   }

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "passageMesh/policy/PolicyNetworks.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
@@ -268,6 +270,13 @@ void ActorCritic::load(torch::serialize::InputArchive& archive) {
       n.averaged->load(averaged);
     else
       n.restartAverage();
+  }
+  const std::pair<const char*, const FullyConnected*> networks[] = {
+      {"actor", &n.actor}, {"critic", &n.critic}, {"validity", &n.validity}, {"averaged actor", &n.averaged}};
+  for (const auto& [what, network] : networks) {
+    if (!*network) continue;
+    const std::string bad = (*network)->nonFiniteParameter();
+    if (!bad.empty()) throw std::runtime_error(std::string("the ") + what + "'s " + bad + " holds NaN or infinity");
   }
 }
 

@@ -273,6 +273,9 @@ Policy::Actor Policy::Actor::load(const Dictionary& d, const std::filesystem::pa
     throw InputError(actorFile.string(), 0, "not an actor of the layout " + xmlFile.filename().string() +
                                                 " describes (" + what + ")");
   }
+  const std::string bad = a.network->nonFiniteParameter();
+  if (!bad.empty())
+    throw InputError(actorFile.string(), 0, "the actor's " + bad + " holds NaN or infinity (a diverged run or a corrupt file)");
   a.network->eval();
   return a;
 }

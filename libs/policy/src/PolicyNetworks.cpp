@@ -80,6 +80,12 @@ void FullyConnectedImpl::makeOutputsConstant(const std::vector<int>& outputs) {
   for (int o : outputs) weight[o].zero_();
 }
 
+std::string FullyConnectedImpl::nonFiniteParameter() const {
+  for (const auto& p : named_parameters())
+    if (!torch::isfinite(p.value()).all().item<bool>()) return p.key();
+  return "";
+}
+
 void FullyConnectedImpl::dropOutputGradients(const std::vector<int>& outputs) {
   torch::NoGradGuard noGrad;
   auto all = parameters();

@@ -239,7 +239,7 @@ const std::vector<Key>& keys() {
        [](const O& o) { return actionNamesText(o.wideNoiseActions); }},
       {"bufferCapacity", readInteger("bufferCapacity", &O::bufferCapacity, 1), [](const O& o) { return std::to_string(o.bufferCapacity); }},
       {"validationEvery", readInteger("validationEvery", &O::validationEvery, 1), [](const O& o) { return std::to_string(o.validationEvery); }},
-      {"validationPassages", readInteger("validationPassages", &O::validationPassages, 0), [](const O& o) { return std::to_string(o.validationPassages); }},
+      {"validationPassages", readInteger("validationPassages", &O::validationPassages, 1), [](const O& o) { return std::to_string(o.validationPassages); }},
       {"validationSeed", readInteger("validationSeed", &O::validationSeed, 0), [](const O& o) { return std::to_string(o.validationSeed); }},
       {"checkpointEvery", readInteger("checkpointEvery", &O::checkpointEvery, 1), [](const O& o) { return std::to_string(o.checkpointEvery); }},
       {"logEvery", readInteger("logEvery", &O::logEvery, 1), [](const O& o) { return std::to_string(o.logEvery); }},

@@ -514,6 +514,10 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
       const auto r = restoresTensor.accessor<double, 1>();
       for (long i = 0; i < restoresTensor.size(0); ++i) restoreEpisodes.push_back(static_cast<long>(r[i]));
     }
+    // The best validation's learner is loaded first, only to check it (it parses and its
+    // weights are finite: it becomes the shipped policy); the checkpoint's own networks,
+    // loaded next, replace every part of it.
+    if (!bestState.empty()) learner_.loadStateBytes(bestState);
     torch::serialize::InputArchive networks;
     archive.read("networks", networks);
     learner_.load(networks);  // last: it can fail too, and then the run ends anyway

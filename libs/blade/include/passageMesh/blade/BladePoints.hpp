@@ -10,6 +10,10 @@
 namespace passageMesh {
 
 inline constexpr int minimumBladePoints = 20;
+// The sizes the fit computes with: its points' span in x or y and the largest |x| or |y|
+// (blade points scaled by 1e300 overflowed in the fit, by 1e-155 they underflowed; any
+// scale in between fits alike, so these bounds are far from both and from any blade).
+inline constexpr double minimumBladeSize = 1e-100, maximumBladeSize = 1e100, maximumBladeCoordinate = 1e100;
 
 struct OrderedBladePoints {
   std::vector<Eigen::Vector2d> points;  // counter-clockwise loop
@@ -19,7 +23,9 @@ struct OrderedBladePoints {
 };
 
 // Throws InputError naming the file (and line) for: fewer than minimumBladePoints
-// distinct points, duplicate points, a self-intersecting loop, a zero-area loop.
+// distinct points, a coordinate beyond maximumBladeCoordinate, a span outside
+// [minimumBladeSize, maximumBladeSize], duplicate points, a self-intersecting loop, a
+// zero-area loop.
 OrderedBladePoints orderBladePoints(const PointSet& input);
 
 }  // namespace passageMesh

@@ -36,4 +36,7 @@ FileWriter fileWithContent(std::filesystem::path file, std::string content);
 // Formats a double with 17 significant digits, enough to read back the same value.
 std::string formatExact(double value);
 
+// Formats a double with 6 significant digits, for messages (0.1, not 0.10000000000000001).
+std::string formatRounded(double value);
+
 }  // namespace passageMesh

@@ -8,6 +8,7 @@
 // layers.2.weight, ... (the odd indices are the activations, which have no parameters).
 #include <torch/torch.h>
 
+#include <string>
 #include <vector>
 
 #include "passageMesh/policy/NetworkLayout.hpp"
@@ -41,6 +42,9 @@ class FullyConnectedImpl : public torch::nn::Module {
   // Adam step then leaves those rows as they are, bit for bit, while its moments for them
   // stay zero), every other weight keeping its gradient.
   void dropOutputGradients(const std::vector<int>& outputs);
+  // The name of the first weight or bias holding NaN or infinity ("layers.0.weight"), or
+  // "" when every one is finite: a diverged run or a corrupt file, refused where loaded.
+  std::string nonFiniteParameter() const;
 
  private:
   torch::nn::Sequential layers_;
