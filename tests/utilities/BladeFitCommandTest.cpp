@@ -89,6 +89,9 @@ TEST(BladeFitCommand, CommandLine) {
   r = runCommand(bladeFit, "-case /nonexistent/case", dir);
   EXPECT_NE(r.exitCode, 0);
   EXPECT_NE(r.err.find("case directory not found"), std::string::npos) << r.err;
+  r = runCommand(bladeFit, "-case '" + (dir / "stdout.txt").string() + "'", dir);  // (a file)
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.err.find("stdout.txt: not a directory (expected the case directory)"), std::string::npos) << r.err;
 }
 
 TEST(BladeFitCommand, AFailedWriteLeavesEveryResultAsItWas) {

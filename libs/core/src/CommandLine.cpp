@@ -50,7 +50,9 @@ bool CommandLine::parse(int argc, const char* const argv[]) {
   }
   caseDir_ = values_["case"].as<std::string>();
   if (!std::filesystem::is_directory(caseDir_))
-    throw InputError(caseDir_.string(), 0, "case directory not found");
+    throw InputError(caseDir_.string(), 0,
+                     std::filesystem::exists(caseDir_) ? "not a directory (expected the case directory)"
+                                                       : "case directory not found");
   return true;
 }
 
