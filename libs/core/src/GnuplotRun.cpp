@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -82,6 +84,15 @@ fs::path GnuplotRun::temporaryFor(const fs::path& png) const {
 std::string GnuplotRun::output(const fs::path& png) {
   std::error_code ignored;
   if (png.has_parent_path()) fs::create_directories(png.parent_path(), ignored);
+  // A folder that cannot take the picture is said here, with the reason; gnuplot's own
+  // message would only quote its `set output` line.
+  const fs::path probe = temporaryFor(png);
+  errno = 0;
+  if (!std::ofstream(probe)) {
+    const std::string why = errno != 0 ? std::strerror(errno) : "cannot create it";
+    throw std::runtime_error(png.string() + ": cannot write file (" + why + ")");
+  }
+  fs::remove(probe, ignored);
   targets_.push_back(png);
   return "set output " + gnuplotQuoted(temporaryFor(png).string()) + "\n";
 }
