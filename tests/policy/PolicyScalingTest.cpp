@@ -106,3 +106,14 @@ TEST(PolicyScaling, ActionsRoundTripAndAreClippedToTheParameterBox) {
   PolicyAction middle{};
   EXPECT_EQ(meshingParametersOf(middle, chord).nT, 550);  // the middle of [100, 1000]
 }
+
+TEST(PolicyScaling, ANonFiniteActionIsRefusedNamingTheParameter) {
+  PolicyAction action{};
+  action[5] = std::nan("");
+  try {
+    meshingParametersOf(action, 0.1);
+    FAIL() << "a NaN action was turned into meshing parameters";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("the policy's action for nT is not a number"), std::string::npos) << e.what();
+  }
+}

@@ -525,3 +525,20 @@ TEST(PolicyTrainer, HeldActionsKeepTheStartActionInEveryEpisodeAndState) {
   for (Eigen::Index i = 0; i < after.rows(); ++i) EXPECT_EQ(after(i, 7), startActions(0, 7));
   EXPECT_NE(trainer.learner().act(PolicyBatch::Zero(1, 24))(0, 0), startActions(0, 0));  // learnt
 }
+
+// Learning rates far too large make the networks NaN within a few batches: the run stops
+// with one line that says so, before it meshes NaN actions (it ended in "buildHohMesh: nT
+// must be at least 8") and before another checkpoint.
+TEST(PolicyTrainer, ADivergedLearnerStopsTheRunWithAClearError) {
+  const ToyEnvironment toy(24, 8, 3);
+  ThreadRollouts rollouts(1);
+  PolicyTrainOptions o = smallRun(256);
+  o.learningRates = {1e12, 1e12};
+  PolicyTrainer trainer(o, toy, rollouts);
+  try {
+    trainer.run(nullptr, {});
+    FAIL() << "a learner with learning rates of 1e12 did not diverge";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("the learner diverged by episode "), std::string::npos) << e.what();
+  }
+}

@@ -126,7 +126,11 @@ PolicyAction policyAction(const MeshingParameters& parameters, double chord) {
 MeshingParameters meshingParametersOf(const PolicyAction& action, double chord) {
   std::array<double, MeshingParameters::size> v;
   const auto lo = MeshingParameters::lowerBounds(chord), hi = MeshingParameters::upperBounds(chord);
-  for (int k = 0; k < policyActionSize; ++k) v[k] = fromUnit(action[k], lo[k], hi[k]);
+  for (int k = 0; k < policyActionSize; ++k) {
+    if (!std::isfinite(action[k]))
+      throw std::invalid_argument("the policy's action for " + MeshingParameters::names()[k] + " is not a number");
+    v[k] = fromUnit(action[k], lo[k], hi[k]);
+  }
   return MeshingParameters::fromArray(v);
 }
 

@@ -238,6 +238,7 @@ void PolicyTrainer::runBatch() {
         environment_.draw(options_.seed, static_cast<std::uint64_t>(first + i), EpisodePurpose::training);
   PolicyBatch states = statesOf(tasks, environment_.stateSize());
   PolicyBatch actions = learner_.act(states);
+  if (!actions.allFinite()) throwDiverged();
   for (int i = 0; i < count; ++i) {
     std::mt19937_64 noise = episodeRandom(options_.seed, static_cast<std::uint64_t>(first + i), noiseStream);
     const double sigma = options_.noiseSigma(first + i);
@@ -275,7 +276,15 @@ ValidationRecord PolicyTrainer::validateCurrentPolicy() const {
   const PolicyBatch states = statesOf(validationTasks_, environment_.stateSize());
   PolicyBatch actions(states.rows(), environment_.actionSize());
   for (Eigen::Index i = 0; i < states.rows(); ++i) actions.row(i) = learner_.actDelivered(states.row(i));
+  if (!actions.allFinite()) throwDiverged();
   return validationRecord(episode_, rollouts_.rewards(validationTasks_, actions, validationRange(options_)));
+}
+
+void PolicyTrainer::throwDiverged() const {
+  // Before the batch's meshes and before the next checkpoint: the last one written is kept.
+  throw std::runtime_error("the learner diverged by episode " + std::to_string(episode_) +
+                           ": the actor's actions are not numbers (lower <actorLearningRate> or "
+                           "<criticLearningRate>; the last checkpoint is kept as it was)");
 }
 
 void PolicyTrainer::validate() {

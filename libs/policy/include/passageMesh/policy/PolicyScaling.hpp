@@ -57,7 +57,8 @@ PolicyState policyState(const BladeParameters& blade, const PassageCondition& co
 std::vector<std::string> stateOutsideTraining(const PolicyState& state);
 
 // The action of a set of meshing parameters for a blade of this chord, and back. Action
-// values outside [-1, 1] are clipped; nT is rounded.
+// values outside [-1, 1] are clipped; nT is rounded; a non-finite action value (a
+// diverged network) throws std::invalid_argument naming the parameter.
 PolicyAction policyAction(const MeshingParameters& parameters, double chord);
 MeshingParameters meshingParametersOf(const PolicyAction& action, double chord);
 

@@ -133,6 +133,8 @@ class PolicyTrainer {
   void validate();
   void search(std::uint64_t index);
   Imitation imitationBatch();
+  // Throws: the actor's actions hold NaN (the learning rates too large for the rewards).
+  [[noreturn]] void throwDiverged() const;
 
   PolicyTrainOptions options_;
   const PolicyEnvironment& environment_;
