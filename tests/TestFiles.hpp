@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <stdexcept>
 #include <string>
 
 namespace passageMesh::testData {
@@ -22,6 +24,23 @@ inline std::filesystem::path writeTempFile(const std::string& folder, const std:
   std::filesystem::create_directories(dir);
   std::ofstream(dir / name) << content;
   return dir / name;
+}
+
+// A LibTorch file (a ZIP archive) with one byte of its first tensor's data changed and its
+// structure intact: LibTorch's reader loads it, ZIP's CRC-32 tells (ZipChecksums.hpp).
+inline void flipATensorByte(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  in.close();
+  const std::size_t name = bytes.find("/data/0");  // the first tensor's local header name
+  const std::size_t header = bytes.rfind("PK\x03\x04", name);
+  if (name == std::string::npos || header == std::string::npos) throw std::runtime_error(file.string() + ": no tensor");
+  const auto field = [&](std::size_t at) {
+    return static_cast<std::size_t>(static_cast<unsigned char>(bytes[at])) |
+           static_cast<std::size_t>(static_cast<unsigned char>(bytes[at + 1])) << 8;
+  };
+  bytes.at(header + 30 + field(header + 26) + field(header + 28) + 2) ^= 0x40;  // a float's byte
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
 }
 
 }  // namespace passageMesh::testData

@@ -115,6 +115,12 @@ TEST(PolicyTrainer, ACheckpointOfAnotherRunOrACorruptFileIsRefusedWithItsName) {
   changed.threads = 2;
   EXPECT_EQ(resumeError(changed, dir / "good.pt"), "accepted");
 
+  std::filesystem::copy_file(dir / "good.pt", dir / "flipped.pt");
+  testData::flipATensorByte(dir / "flipped.pt");
+  const std::string flipped = resumeError(smallRun(64), dir / "flipped.pt");
+  EXPECT_NE(flipped.find("flipped.pt: corrupt checkpoint: member '"), std::string::npos) << flipped;
+  EXPECT_NE(flipped.find("' does not match its checksum"), std::string::npos) << flipped;
+
   std::ofstream(dir / "corrupt.pt") << "not a checkpoint";
   const std::string corrupt = resumeError(smallRun(64), dir / "corrupt.pt");
   EXPECT_NE(corrupt.find("corrupt.pt"), std::string::npos) << corrupt;

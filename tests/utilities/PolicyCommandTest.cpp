@@ -213,6 +213,14 @@ TEST(PolicyMeshCommand, MeshesWithATrainedPolicyAndRefusesBadPolicyFiles) {
   }
   refused("divergedActor", (diverged / "final.xml").string(), "final.pt: the actor's layers.2.weight holds NaN");
 
+  // Bytes changed inside a tensor, the ZIP's structure intact: LibTorch would load it.
+  const fs::path flipped = trained / "flipped";
+  fs::create_directories(flipped);
+  fs::copy_file(policyXml, flipped / "final.xml");
+  fs::copy_file(trained / "policy" / "final.pt", flipped / "final.pt");
+  testData::flipATensorByte(flipped / "final.pt");
+  refused("flippedActor", (flipped / "final.xml").string(), "final.pt: corrupt actor file: member '");
+
   const fs::path wider = trained / "wider";
   fs::create_directories(wider);
   std::string xml = readText(policyXml);

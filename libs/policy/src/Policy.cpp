@@ -8,6 +8,7 @@
 #include "passageMesh/core/Dictionary.hpp"
 #include "passageMesh/core/EtcFiles.hpp"
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/core/ZipChecksums.hpp"
 #include "passageMesh/core/JoinedWords.hpp"
 #include "passageMesh/policy/PolicyNetworks.hpp"
 #include "TorchTensors.hpp"
@@ -254,6 +255,8 @@ Policy::Actor Policy::Actor::load(const Dictionary& d, const std::filesystem::pa
     throw InputError(d.source(), d.line("actor"), "the actor file " + actorFile.string() + " does not exist");
   a.network = makeActor(a.layout);
   a.file = actorFile;
+  if (const std::string problem = zipChecksumProblem(actorFile); !problem.empty())
+    throw InputError(actorFile.string(), 0, "corrupt actor file: " + problem);
   try {
     // LibTorch's load takes each tensor's shape from the file, so the shapes the layout
     // asks for are compared afterwards.

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/core/ZipChecksums.hpp"
 #include "passageMesh/policy/ActionSearch.hpp"
 #include "passageMesh/policy/Policy.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
@@ -389,6 +390,7 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
   const std::string name = file.string();
   if (!std::filesystem::exists(file)) throw InputError(name, 0, "no checkpoint to resume from");
   const auto corrupt = [&](const std::string& what) { return InputError(name, 0, "corrupt checkpoint: " + what); };
+  if (const std::string problem = zipChecksumProblem(name); !problem.empty()) throw corrupt(problem);
   try {
     torch::serialize::InputArchive archive;
     archive.load_from(name);
