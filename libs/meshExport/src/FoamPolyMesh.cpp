@@ -20,7 +20,14 @@ std::string header(const std::string& foamClass, const std::string& object, cons
 }
 
 std::string vector3(double x, double y, double z) {
-  return "(" + formatExact(x) + " " + formatExact(y) + " " + formatExact(z) + ")";
+  std::string text = "(";  // (appended in steps: GCC 12 warns falsely (-Wrestrict) on "(" + string)
+  text += formatExact(x);
+  text += ' ';
+  text += formatExact(y);
+  text += ' ';
+  text += formatExact(z);
+  text += ')';
+  return text;
 }
 
 const char* foamType(EdgePatchKind kind) {
