@@ -536,13 +536,12 @@ TEST(PolicyTrainer, HeldActionsKeepTheStartActionInEveryEpisodeAndState) {
 // with one line that says so, before it meshes NaN actions (it ended in "buildHohMesh: nT
 // must be at least 8") and before another checkpoint.
 TEST(PolicyTrainer, ADivergedLearnerStopsTheRunWithAClearError) {
-  const ToyEnvironment toy(24, 8, 3);
-  ThreadRollouts rollouts(1);
   PolicyTrainOptions o = smallRun(256);
   o.learningRates = {1e12, 1e12};
-  PolicyTrainer trainer(o, toy, rollouts);
+  const ToyEnvironment toy(24, 8, 3);
+  ThreadRollouts rollouts(1);
   try {
-    trainer.run(nullptr, {});
+    PolicyTrainer(o, toy, rollouts).run(nullptr, {});
     FAIL() << "a learner with learning rates of 1e12 did not diverge";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("the learner diverged by episode "), std::string::npos) << e.what();
