@@ -20,9 +20,14 @@ for blade in LS89 STD10 T106A SIRT; do
   cp -r "$root/tutorials/$blade/constant" "$root/tutorials/$blade/system" "$dir/"
   rm -f "$dir/constant/bladeParameters.xml" "$dir/system/meshDict.xml"
   bladeFit -case "$dir" > "$dir/log.bladeFit"
-  # policyMesh writes system/meshDict.xml even where its mesh is invalid; iterOptimize
-  # starts from it (from the defaults without one).
-  [ "$policy" = defaults ] || policyMesh -case "$dir" -policy "$policy" > "$dir/log.policyMesh" 2>&1 || true
+  # iterOptimize starts from system/meshDict.xml (from the defaults without one). policyMesh
+  # writes it with a valid mesh only, so where the one-shot mesh is invalid the parameters
+  # it prints ("    name value", yIn and yOut in metres) are written as the start here.
+  if [ "$policy" != defaults ] && ! policyMesh -case "$dir" -policy "$policy" > "$dir/log.policyMesh" 2>&1; then
+    { echo "<meshDict>"
+      sed -n 's#^    \([A-Za-z]*\) *\([^ ]*\)$#  <\1>\2</\1>#p' "$dir/log.policyMesh"
+      echo "</meshDict>"; } > "$dir/system/meshDict.xml"
+  fi
   start=$(date +%s.%N)
   log="$(iterOptimize -case "$dir" -budget "$budget" -seed 1 2>/dev/null)"
   end=$(date +%s.%N)

@@ -11,8 +11,8 @@
 
 #include "../TestFiles.hpp"
 #include "../quality/QualityTestData.hpp"
-#include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 #include "passageMesh/meshExport/FoamPolyMesh.hpp"
 #include "passageMesh/meshExport/MeshExport.hpp"
 #include "passageMesh/meshExport/Plot3dFile.hpp"

@@ -15,7 +15,7 @@
 #include "../blade/BladeTestData.hpp"
 #include "UtilityTestSupport.hpp"
 #include "passageMesh/blade/BladeParametersFile.hpp"
-#include "passageMesh/core/AtomicFile.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 #include "passageMesh/passage/PassageCase.hpp"
 #include "passageMesh/workflow/MeshQualityObjective.hpp"
 

@@ -219,7 +219,7 @@ TEST(PolicyMeshCommand, MeshesWithATrainedPolicyAndRefusesBadPolicyFiles) {
   fs::copy_file(policyXml, flipped / "final.xml");
   fs::copy_file(trained / "policy" / "final.pt", flipped / "final.pt");
   testData::flipATensorByte(flipped / "final.pt");
-  refused("flippedActor", (flipped / "final.xml").string(), "final.pt: corrupt actor file: member '");
+  refused("flippedActor", (flipped / "final.xml").string(), "' does not match its checksum (the file is corrupt)");
 
   const fs::path wider = trained / "wider";
   fs::create_directories(wider);

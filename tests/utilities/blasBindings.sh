@@ -1,6 +1,7 @@
 #!/bin/bash
 # Every BLAS routine the tools call is OpenBLAS's (CMakeLists.txt, "One BLAS in every
-# process"): each tool in BUILD_DIR/bin and each test program in BUILD_DIR/tests is started
+# process"): each tool in BUILD_DIR/bin, each test program in BUILD_DIR/tests and each
+# benchmark in BUILD_DIR/bench (where built) is started
 # with LD_BIND_NOW, so that the dynamic linker binds all its symbols before main and reports
 # where (LD_DEBUG=bindings); every binding of a BLAS routine (sgemm_, dgemm_, dsyrk_, ...)
 # must go to a library whose real path names openblas. Before the fix, policyMesh bound
@@ -10,10 +11,11 @@ set -u
 build="${1:?usage: blasBindings.sh BUILD_DIR}"
 blasSymbol='symbol `[sdcz](gemm|gemv|syrk|trsm|trmm|symm|axpy|dot|scal|copy|nrm2)_'"'"
 failures=0 checked=0
-for exe in "$build"/bin/* "$build"/tests/*Tests; do
+for exe in "$build"/bin/* "$build"/tests/*Tests "$build"/bench/*; do
   [ -f "$exe" ] && [ -x "$exe" ] || continue
-  case "$exe" in */bin/*) option=-help ;; *) option=--gtest_list_tests ;; esac
-  targets="$(LD_BIND_NOW=1 LD_DEBUG=bindings "$exe" "$option" 2>&1 >/dev/null |
+  case "$exe" in */bin/*) option=-help ;; */tests/*) option=--gtest_list_tests ;; *) option=--help ;; esac
+  # (the bindings are made before main: a benchmark that starts work on --help is stopped)
+  targets="$(LD_BIND_NOW=1 LD_DEBUG=bindings timeout 20 "$exe" "$option" 2>&1 >/dev/null |
     grep -E "$blasSymbol" | sed -n 's/.* to \([^ ]*\) \[.*/\1/p' | sort -u)"
   [ -n "$targets" ] || continue
   checked=$((checked + 1))

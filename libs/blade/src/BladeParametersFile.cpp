@@ -5,6 +5,7 @@
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/Dictionary.hpp"
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 
 namespace passageMesh {
 

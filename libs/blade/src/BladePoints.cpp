@@ -6,8 +6,8 @@
 #include <numeric>
 
 #include "passageMesh/blade/BladeValidity.hpp"
-#include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 
 namespace passageMesh {
 

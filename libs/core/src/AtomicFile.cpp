@@ -1,4 +1,5 @@
 #include "passageMesh/core/AtomicFile.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 
 #include <unistd.h>
 
@@ -18,13 +19,11 @@ std::filesystem::path temporaryFor(const std::filesystem::path& file) {
 
 void writeTemporary(const std::filesystem::path& file, const std::string& content,
                     const std::filesystem::path& temporary) {
+  errno = 0;
   std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
   out << content;
   out.close();  // flushes: a deferred write error shows here
-  if (!out) {
-    const std::string why = errno != 0 ? std::strerror(errno) : "write error";
-    throw std::runtime_error(file.string() + ": cannot write file (" + why + ")");
-  }
+  if (!out) throw std::runtime_error(file.string() + ": cannot write file (" + fileErrorReason("write error") + ")");
 }
 
 }  // namespace
@@ -44,7 +43,6 @@ void writeFilesAtomically(const std::vector<FileWriter>& files) {
     for (; written < files.size(); ++written) {
       const fs::path& file = files[written].file;
       if (file.has_parent_path()) fs::create_directories(file.parent_path(), ignored);
-      errno = 0;
       files[written].write(temporaryFor(file));
     }
   } catch (...) {
@@ -82,16 +80,8 @@ void writeFileAtomically(const std::filesystem::path& file, const std::string& c
   writeFilesAtomically({{file, content}});
 }
 
-std::string formatExact(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
-}
-
-std::string formatRounded(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", value);
-  return buffer;
+std::string fileErrorReason(const std::string& fallback) {
+  return errno != 0 ? std::strerror(errno) : fallback;
 }
 
 }  // namespace passageMesh

@@ -9,6 +9,7 @@
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/InputError.hpp"
 #include "passageMesh/core/JoinedWords.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 
 namespace passageMesh {
 

@@ -4,7 +4,6 @@
 
 #include <cerrno>
 #include <cstdlib>
-#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -88,10 +87,8 @@ std::string GnuplotRun::output(const fs::path& png) {
   // message would only quote its `set output` line.
   const fs::path probe = temporaryFor(png);
   errno = 0;
-  if (!std::ofstream(probe)) {
-    const std::string why = errno != 0 ? std::strerror(errno) : "cannot create it";
-    throw std::runtime_error(png.string() + ": cannot write file (" + why + ")");
-  }
+  if (!std::ofstream(probe))
+    throw std::runtime_error(png.string() + ": cannot write file (" + fileErrorReason("cannot create it") + ")");
   fs::remove(probe, ignored);
   targets_.push_back(png);
   return "set output " + gnuplotQuoted(temporaryFor(png).string()) + "\n";

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <fstream>
-#include <iterator>
+#include <utility>
 #include <vector>
 
 namespace passageMesh {
@@ -63,9 +63,13 @@ bool findDirectory(const Bytes& b, Directory& d) {
 }  // namespace
 
 std::string zipChecksumProblem(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
   if (!in) return "cannot be read";
-  const Bytes b(std::vector<unsigned char>(std::istreambuf_iterator<char>(in), {}));
+  std::vector<unsigned char> content(static_cast<std::size_t>(in.tellg()));
+  in.seekg(0);
+  if (!in.read(reinterpret_cast<char*>(content.data()), static_cast<std::streamsize>(content.size())))
+    return "cannot be read";
+  const Bytes b(std::move(content));
   Directory d;
   if (!findDirectory(b, d)) return "not a ZIP archive (no end of central directory)";
   std::uint64_t at = d.offset;
@@ -79,21 +83,23 @@ std::string zipChecksumProblem(const std::filesystem::path& file) {
                         commentLength = b.read(at + 32, 2);
     if (!b.has(at + 46, nameLength + extraLength + commentLength)) return "its central directory is damaged";
     const std::string name(reinterpret_cast<const char*>(b.at(at + 46)), static_cast<std::size_t>(nameLength));
-    // ZIP64: the 8-byte values of the fields that hold 0xffffffff, in this order.
-    for (std::uint64_t e = at + 46 + nameLength; e + 4 <= at + 46 + nameLength + extraLength;) {
+    // ZIP64: the 8-byte values of the fields that hold 0xffffffff, in this order. Every
+    // length read from the file is checked against the extra field it lies in.
+    const std::uint64_t extraEnd = at + 46 + nameLength + extraLength;
+    for (std::uint64_t e = at + 46 + nameLength; e + 4 <= extraEnd;) {
       const std::uint64_t id = b.read(e, 2), length = b.read(e + 2, 2);
+      if (e + 4 + length > extraEnd) return "its central directory is damaged";
       if (id == 0x0001) {
         std::uint64_t field = e + 4;
-        const auto take = [&](std::uint64_t& value, bool spilled) {
-          if (spilled && field + 8 <= e + 4 + length) {
-            value = b.read(field, 8);
-            field += 8;
-          }
+        const auto take = [&](std::uint64_t& value) {
+          if (value != spilled32) return true;
+          if (field + 8 > e + 4 + length) return false;
+          value = b.read(field, 8);
+          field += 8;
+          return true;
         };
-        std::uint64_t ignored = uncompressed;
-        take(ignored, uncompressed == spilled32);
-        take(size, size == spilled32);
-        take(local, local == spilled32);
+        std::uint64_t unused = uncompressed;
+        if (!take(unused) || !take(size) || !take(local)) return "its central directory is damaged";
       }
       e += 4 + length;
     }
@@ -108,7 +114,8 @@ std::string zipChecksumProblem(const std::filesystem::path& file) {
         sum = crc32(sum, b.at(data + done), static_cast<uInt>(chunk));
         done += chunk;
       }
-      if (static_cast<std::uint32_t>(sum) != crc) return "member '" + name + "' does not match its checksum";
+      if (static_cast<std::uint32_t>(sum) != crc)
+        return "member '" + name + "' does not match its checksum (the file is corrupt)";
     }
     at += 46 + nameLength + extraLength + commentLength;
   }

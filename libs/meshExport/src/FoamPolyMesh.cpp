@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "passageMesh/core/AtomicFile.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 
 namespace passageMesh {
 

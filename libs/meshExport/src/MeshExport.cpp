@@ -69,7 +69,7 @@ std::vector<fs::path> exportMesh(const StructuredMesh& mesh, const fs::path& cas
       }
       case ExportFormat::su2cgns: {
         const fs::path su2Mesh = fs::path("mesh") / "passageSU2.cgns", config = fs::path("mesh") / "passageSU2.cfg";
-        writeSu2Cgns(passage, staged.stage(caseDir / su2Mesh, false));
+        writeSu2Cgns(passage, staged.stage(caseDir / su2Mesh, false), caseDir / su2Mesh);
         writeText(staged.stage(caseDir / config, false), su2ConfigFragment(passage, su2Mesh.filename().string()));
         written.insert(written.end(), {su2Mesh, config});
         break;

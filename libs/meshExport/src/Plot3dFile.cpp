@@ -6,7 +6,7 @@
 #include <cstring>
 #include <sstream>
 
-#include "passageMesh/core/AtomicFile.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 
 namespace passageMesh {
 

@@ -5,9 +5,10 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
-#include "passageMesh/core/AtomicFile.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 #include "passageMesh/structured/CgnsLibrary.hpp"
 
 namespace passageMesh {
@@ -17,9 +18,9 @@ namespace {
 // An open CGNS file that is closed on every path out.
 class OpenCgns {
  public:
-  explicit OpenCgns(const std::filesystem::path& file) : label_(file.string()) {
+  OpenCgns(const std::filesystem::path& file, std::string label) : label_(std::move(label)) {
     prepareCgnsLibrary();
-    call(cg_open(label_.c_str(), CG_MODE_WRITE, &fn_), "open");
+    call(cg_open(file.c_str(), CG_MODE_WRITE, &fn_), "open");
   }
   ~OpenCgns() { if (fn_ >= 0) cg_close(fn_); }
   OpenCgns(const OpenCgns&) = delete;
@@ -92,8 +93,9 @@ void writePeriodicConnection(const OpenCgns& f, int base, int zone, const Unstru
 
 }  // namespace
 
-void writeSu2Cgns(const UnstructuredPassage& passage, const std::filesystem::path& file) {
-  OpenCgns f(file);
+void writeSu2Cgns(const UnstructuredPassage& passage, const std::filesystem::path& file,
+                  const std::filesystem::path& errorName) {
+  OpenCgns f(file, (errorName.empty() ? file : errorName).string());
   int base = 0, zone = 0, coordinate = 0, section = 0;
   f.call(cg_base_write(f.fn(), "Base", 2, 2, &base), "base");
   f.call(cg_goto(f.fn(), base, "end"), "goto base");

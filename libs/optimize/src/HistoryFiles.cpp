@@ -6,6 +6,7 @@
 
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/GnuplotRun.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 
 namespace passageMesh {
 

@@ -7,6 +7,7 @@
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/Dictionary.hpp"
 #include "passageMesh/core/EtcFiles.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 
 namespace passageMesh {
 
@@ -58,7 +59,8 @@ MeshingParameters MeshingParameters::fromArray(const std::array<double, size>& v
   p.alphaCamber = v[2];
   p.betaIn = v[3];
   p.betaOut = v[4];
-  // Clamped to int's range first: a conversion of a larger value is undefined.
+  // Clamped to int's range first: beyond it lround's result is unspecified and the
+  // conversion to int wraps (nT 4294967668 became 372).
   p.nT = static_cast<int>(std::lround(std::clamp(v[5], double(std::numeric_limits<int>::min()),
                                                  double(std::numeric_limits<int>::max()))));
   p.gammaLe = v[6];
@@ -126,7 +128,7 @@ std::array<double, MeshingParameters::size> clipArrayToRange(std::array<double, 
     const double clipped = std::clamp(v[k], lo[k], hi[k]);
     if (clipped != v[k] && warnings)
       warnings->push_back(source + ": <" + MeshingParameters::names()[k] + "> " +
-                          formatExact(v[k]) + " is outside [" + formatRounded(lo[k]) + ", " + formatRounded(hi[k]) +
+                          formatExact(v[k]) + " is outside [" + formatShortest(lo[k]) + ", " + formatShortest(hi[k]) +
                           "], clipped to " + formatExact(clipped));
     v[k] = clipped;
   }

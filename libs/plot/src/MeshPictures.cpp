@@ -5,8 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/GnuplotRun.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 #include "passageMesh/meshExport/BladeEdges.hpp"
 #include "passageMesh/plot/MeshPlotData.hpp"
 #include "passageMesh/quality/OBlockNeighbours.hpp"

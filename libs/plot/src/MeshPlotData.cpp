@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "passageMesh/core/AtomicFile.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 
 namespace passageMesh {
 

@@ -271,13 +271,19 @@ void ActorCritic::load(torch::serialize::InputArchive& archive) {
     else
       n.restartAverage();
   }
+  if (const std::string bad = nonFiniteWeight(); !bad.empty()) throw std::runtime_error(bad + " holds NaN or infinity");
+}
+
+std::string ActorCritic::nonFiniteWeight() const {
+  const Networks& n = *networks_;
   const std::pair<const char*, const FullyConnected*> networks[] = {
       {"actor", &n.actor}, {"critic", &n.critic}, {"validity", &n.validity}, {"averaged actor", &n.averaged}};
   for (const auto& [what, network] : networks) {
     if (!*network) continue;
     const std::string bad = (*network)->nonFiniteParameter();
-    if (!bad.empty()) throw std::runtime_error(std::string("the ") + what + "'s " + bad + " holds NaN or infinity");
+    if (!bad.empty()) return std::string("the ") + what + "'s " + bad;
   }
+  return "";
 }
 
 void ActorCritic::startActorFrom(const std::filesystem::path& actorFile, const NetworkLayout& fileLayout) {

@@ -8,8 +8,8 @@
 #include "passageMesh/core/Dictionary.hpp"
 #include "passageMesh/core/EtcFiles.hpp"
 #include "passageMesh/core/InputError.hpp"
-#include "passageMesh/core/ZipChecksums.hpp"
 #include "passageMesh/core/JoinedWords.hpp"
+#include "passageMesh/core/ZipChecksums.hpp"
 #include "passageMesh/policy/PolicyNetworks.hpp"
 #include "TorchTensors.hpp"
 
@@ -102,6 +102,8 @@ void expectText(const Dictionary& d, const std::string& key, const std::string& 
 
 void writePolicyFiles(const std::filesystem::path& xmlFile, const ActorCritic& learner,
                       const PolicyStateScaling& scaling, const PolicyProvenance& provenance) {
+  if (const std::string bad = learner.nonFiniteWeight(); !bad.empty())
+    throw std::runtime_error(xmlFile.string() + ": not written: " + bad + " holds NaN or infinity");
   std::filesystem::path actorFile = xmlFile;
   actorFile.replace_extension(".pt");
   learner.saveActor(actorFile);
@@ -256,7 +258,7 @@ Policy::Actor Policy::Actor::load(const Dictionary& d, const std::filesystem::pa
   a.network = makeActor(a.layout);
   a.file = actorFile;
   if (const std::string problem = zipChecksumProblem(actorFile); !problem.empty())
-    throw InputError(actorFile.string(), 0, "corrupt actor file: " + problem);
+    throw InputError(actorFile.string(), 0, problem + " (expected the actor LibTorch wrote)");
   try {
     // LibTorch's load takes each tensor's shape from the file, so the shapes the layout
     // asks for are compared afterwards.

@@ -7,10 +7,10 @@
 #include <numbers>
 #include <sstream>
 
-#include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/Dictionary.hpp"
 #include "passageMesh/core/InputError.hpp"
 #include "passageMesh/core/JoinedWords.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 #include "passageMesh/passage/MeshingParameters.hpp"
 #include "passageMesh/policy/PolicyScaling.hpp"
 

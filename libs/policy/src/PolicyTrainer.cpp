@@ -283,9 +283,11 @@ ValidationRecord PolicyTrainer::validateCurrentPolicy() const {
 
 void PolicyTrainer::throwDiverged() const {
   // Before the batch's meshes and before the next checkpoint: the last one written is kept.
-  throw std::runtime_error("the learner diverged by episode " + std::to_string(episode_) +
-                           ": the actor's actions are not numbers (lower <actorLearningRate> or "
-                           "<criticLearningRate>; the last checkpoint is kept as it was)");
+  const std::string weight = learner_.nonFiniteWeight();
+  throw std::runtime_error("the learner diverged by episode " + std::to_string(episode_) + ": " +
+                           (weight.empty() ? "the actor's actions are not numbers" : weight + " holds NaN or infinity") +
+                           " (lower <actorLearningRate> or <criticLearningRate>; the last checkpoint is kept as "
+                           "it was)");
 }
 
 void PolicyTrainer::validate() {
@@ -331,6 +333,7 @@ bool PolicyTrainer::run(const std::atomic<bool>* stop, const Events& events) {
 }
 
 void PolicyTrainer::saveCheckpoint(const std::filesystem::path& file) const {
+  if (!learner_.nonFiniteWeight().empty()) throwDiverged();  // the last checkpoint stays sound
   torch::serialize::OutputArchive archive;
   archive.write("format", c10::IValue(std::string(checkpointFormat)));
   archive.write("layout", c10::IValue(layoutText(learner_.layout())));
@@ -390,7 +393,8 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
   const std::string name = file.string();
   if (!std::filesystem::exists(file)) throw InputError(name, 0, "no checkpoint to resume from");
   const auto corrupt = [&](const std::string& what) { return InputError(name, 0, "corrupt checkpoint: " + what); };
-  if (const std::string problem = zipChecksumProblem(name); !problem.empty()) throw corrupt(problem);
+  if (const std::string problem = zipChecksumProblem(name); !problem.empty())
+    throw InputError(name, 0, problem + " (expected a checkpoint policyTrain wrote)");
   try {
     torch::serialize::InputArchive archive;
     archive.load_from(name);
@@ -528,7 +532,13 @@ void PolicyTrainer::resume(const std::filesystem::path& file, bool sameSettings)
     // The best validation's learner is loaded first, only to check it (it parses and its
     // weights are finite: it becomes the shipped policy); the checkpoint's own networks,
     // loaded next, replace every part of it.
-    if (!bestState.empty()) learner_.loadStateBytes(bestState);
+    if (!bestState.empty()) {
+      try {
+        learner_.loadStateBytes(bestState);
+      } catch (const std::exception& e) {
+        throw corrupt(std::string("the best validation's learner: ") + e.what());
+      }
+    }
     torch::serialize::InputArchive networks;
     archive.read("networks", networks);
     learner_.load(networks);  // last: it can fail too, and then the run ends anyway

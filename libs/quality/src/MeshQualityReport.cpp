@@ -8,7 +8,7 @@
 #include "passageMesh/core/InputError.hpp"
 #include "passageMesh/structured/CgnsReader.hpp"
 
-#include "passageMesh/core/AtomicFile.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 
 namespace passageMesh {
 namespace {

@@ -1,14 +1,20 @@
 #include "passageMesh/structured/CgnsLibrary.hpp"
 
-// HDF5's public C API (H5public.h; herr_t is int). Declared here because Debian's
-// libcgns-dev does not bring HDF5's headers; the library itself is CGNS's own dependency.
-extern "C" int H5dont_atexit(void);
+#include <dlfcn.h>
 
 namespace passageMesh {
 
 void prepareCgnsLibrary() {
-  // Fails (harmlessly) once HDF5 has started, so only the first call counts.
-  static const bool prepared = (H5dont_atexit(), true);
+  // H5dont_atexit (HDF5's public C API, H5public.h) is looked up in the process: HDF5 is
+  // libcgns's own dependency and Debian's libcgns-dev brings neither its headers nor a
+  // name to link it by. It fails (harmlessly) once HDF5 has started, so only the first
+  // call counts.
+  static const bool prepared = [] {
+    using DontAtExit = int (*)();
+    if (const auto dontAtExit = reinterpret_cast<DontAtExit>(::dlsym(RTLD_DEFAULT, "H5dont_atexit")))
+      dontAtExit();
+    return true;
+  }();
   static_cast<void>(prepared);
 }
 

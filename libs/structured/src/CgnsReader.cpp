@@ -22,10 +22,10 @@ class CgnsInput {
  public:
   explicit CgnsInput(const std::filesystem::path& path) : file_(path.string()) {
     if (!std::filesystem::exists(path)) throw InputError(file_, 0, "file not found");
+    prepareCgnsLibrary();  // (cg_is_cgns starts HDF5 too)
     int type = 0;
     if (cg_is_cgns(file_.c_str(), &type) != CG_OK)
       throw InputError(file_, 0, "not a CGNS file (expected a mesh written by writeCgns)");
-    prepareCgnsLibrary();
     check(cg_open(file_.c_str(), CG_MODE_READ, &fn_), "cannot open");
   }
   ~CgnsInput() { cg_close(fn_); }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "passageMesh/core/AtomicFile.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 
 namespace passageMesh {
 namespace {

@@ -11,8 +11,8 @@ namespace passageMesh {
 
 inline constexpr int minimumBladePoints = 20;
 // The sizes the fit computes with: its points' span in x or y and the largest |x| or |y|
-// (blade points scaled by 1e300 overflowed in the fit, by 1e-155 they underflowed; any
-// scale in between fits alike, so these bounds are far from both and from any blade).
+// (LS89's points scaled by 1e300 overflowed in the fit, by 1e-155 they underflowed, while
+// 1e-150 to 1e150 gave its shape: these bounds lie well inside, and far from any blade).
 inline constexpr double minimumBladeSize = 1e-100, maximumBladeSize = 1e100, maximumBladeCoordinate = 1e100;
 
 struct OrderedBladePoints {

@@ -33,10 +33,8 @@ void writeFilesAtomically(const std::vector<FileWriter>& files);
 // The FileWriter that writes `content` to `file`.
 FileWriter fileWithContent(std::filesystem::path file, std::string content);
 
-// Formats a double with 17 significant digits, enough to read back the same value.
-std::string formatExact(double value);
-
-// Formats a double with 6 significant digits, for messages (0.1, not 0.10000000000000001).
-std::string formatRounded(double value);
+// Why the file operation just made failed, for a message: strerror(errno), or `fallback`
+// where the operation set no errno. Clear errno (errno = 0) before the operation.
+std::string fileErrorReason(const std::string& fallback);
 
 }  // namespace passageMesh

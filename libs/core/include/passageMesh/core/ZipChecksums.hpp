@@ -11,7 +11,8 @@ namespace passageMesh {
 // "" when every stored member's data has the CRC-32 the central directory records (ZIP
 // and ZIP64 layouts; members stored uncompressed, as LibTorch writes them: compressed ones
 // are not checked); else what is wrong, in words ("member 'archive/data/3' does not match
-// its checksum"). A file that cannot be read, or is no ZIP archive, is described too.
+// its checksum (the file is corrupt)"). A file that cannot be read, or is no ZIP archive,
+// is described too.
 std::string zipChecksumProblem(const std::filesystem::path& file);
 
 }  // namespace passageMesh

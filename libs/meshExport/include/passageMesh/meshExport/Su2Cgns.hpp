@@ -19,8 +19,10 @@
 namespace passageMesh {
 
 // Throws std::runtime_error naming the file (and the CGNS error) when it cannot be
-// written. Not thread-safe: the CGNS library has global state.
-void writeSu2Cgns(const UnstructuredPassage& passage, const std::filesystem::path& file);
+// written; `errorName`, where given, is the file the error names (the target of a staged
+// temporary). Not thread-safe: the CGNS library has global state.
+void writeSu2Cgns(const UnstructuredPassage& passage, const std::filesystem::path& file,
+                  const std::filesystem::path& errorName = {});
 
 // MARKER_PERIODIC, MARKER_HEATFLUX (adiabatic walls), MARKER_INLET/OUTLET name lists as
 // comments for the user to complete, MESH_FILENAME and MESH_FORMAT= CGNS.
