@@ -69,12 +69,14 @@ TEST(ExportMeshCommand, UnreplaceableTargetWritesNothing) {
 // started HDF5 reading passage.cgns before its exit handler was turned off.
 TEST(ExportMeshCommand, AFailedWriteIsOneLineAndWritesNothing) {
   const auto dir = caseWithMesh("limited");
-  // SIGXFSZ ignored: a write past the limit then fails with EFBIG instead of killing.
-  const RunResult r = runCommand("/bin/sh", "-c \"trap '' XFSZ; ulimit -f 8; exec '" + exportMeshTool + "' -case '" +
-                                                dir.string() + "' -format su2cgns\"", dir);
+  const RunResult r = runWithFileSizeLimit(exportMeshTool, "-case '" + dir.string() + "' -format su2cgns", dir, 8);
   expectOneErrorLine(r, "passageSU2.cgns: CGNS ");
   EXPECT_FALSE(std::filesystem::exists(dir / "mesh" / "passageSU2.cgns"));
   EXPECT_FALSE(std::filesystem::exists(dir / "mesh" / "passageSU2.cfg"));
+  // A plain file too: the target and the reason, not a temporary's name.
+  const RunResult p = runWithFileSizeLimit(exportMeshTool, "-case '" + dir.string() + "' -format plot3d", dir, 8);
+  expectOneErrorLine(p, "mesh/passage.xyz: cannot write file (File too large)");
+  EXPECT_FALSE(std::filesystem::exists(dir / "mesh" / "passage.xyz"));
   for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
     EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
 }

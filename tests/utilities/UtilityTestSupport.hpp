@@ -60,6 +60,15 @@ inline RunResult runCommand(const std::string& executable, const std::string& ar
   return r;
 }
 
+// The same with the files it writes limited to `kilobytes` (ulimit -f) and SIGXFSZ
+// ignored, so that a write past the limit fails (EFBIG) as on a full disk. `arguments` may
+// hold single quotes, not double ones.
+inline RunResult runWithFileSizeLimit(const std::string& executable, const std::string& arguments,
+                                      const std::filesystem::path& outputDir, int kilobytes) {
+  return runCommand("/bin/sh", "-c \"trap '' XFSZ; ulimit -f " + std::to_string(kilobytes) + "; exec '" + executable +
+                                   "' " + arguments + "\"", outputDir);
+}
+
 inline RunResult runTool(const std::string& executable, const std::filesystem::path& caseDir,
                          const std::string& arguments = "") {
   return runCommand(executable, "-case '" + caseDir.string() + "' " + arguments, caseDir);

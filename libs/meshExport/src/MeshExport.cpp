@@ -1,7 +1,6 @@
 #include "passageMesh/meshExport/MeshExport.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -15,17 +14,6 @@
 namespace passageMesh {
 
 namespace fs = std::filesystem;
-
-namespace {
-
-void writeText(const fs::path& file, const std::string& content) {
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  out << content;
-  out.close();
-  if (!out) throw std::runtime_error(file.string() + ": cannot write file");
-}
-
-}  // namespace
 
 std::vector<ExportFormat> parseExportFormats(const std::string& list) {
   std::vector<ExportFormat> formats;
@@ -62,15 +50,15 @@ std::vector<fs::path> exportMesh(const StructuredMesh& mesh, const fs::path& cas
       }
       case ExportFormat::plot3d: {
         const fs::path ascii = fs::path("mesh") / "passage.xyz", binary = fs::path("mesh") / "passage.x";
-        writeText(staged.stage(caseDir / ascii, false), plot3dAscii(mesh, thickness));
-        writeText(staged.stage(caseDir / binary, false), plot3dBinary(mesh, thickness));
+        staged.writeFile(caseDir / ascii, plot3dAscii(mesh, thickness));
+        staged.writeFile(caseDir / binary, plot3dBinary(mesh, thickness));
         written.insert(written.end(), {ascii, binary});
         break;
       }
       case ExportFormat::su2cgns: {
         const fs::path su2Mesh = fs::path("mesh") / "passageSU2.cgns", config = fs::path("mesh") / "passageSU2.cfg";
         writeSu2Cgns(passage, staged.stage(caseDir / su2Mesh, false), caseDir / su2Mesh);
-        writeText(staged.stage(caseDir / config, false), su2ConfigFragment(passage, su2Mesh.filename().string()));
+        staged.writeFile(caseDir / config, su2ConfigFragment(passage, su2Mesh.filename().string()));
         written.insert(written.end(), {su2Mesh, config});
         break;
       }

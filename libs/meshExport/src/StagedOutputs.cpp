@@ -2,8 +2,12 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+#include <fstream>
 #include <stdexcept>
 #include <string>
+
+#include "passageMesh/core/AtomicFile.hpp"
 
 namespace passageMesh {
 
@@ -35,6 +39,15 @@ fs::path StagedOutputs::stage(const fs::path& target, bool directory) {
                              (ec ? ec.message() : std::string("cannot make ") + temporary.string()) + ")");
   entries_.push_back({target, temporary, directory});
   return temporary;
+}
+
+void StagedOutputs::writeFile(const fs::path& target, const std::string& content) {
+  const fs::path temporary = stage(target, false);
+  errno = 0;
+  std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+  out << content;
+  out.close();  // flushes: a deferred write error shows here
+  if (!out) throw std::runtime_error(target.string() + ": cannot write file (" + fileErrorReason("write error") + ")");
 }
 
 void StagedOutputs::commit() {

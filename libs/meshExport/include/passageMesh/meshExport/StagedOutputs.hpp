@@ -4,6 +4,7 @@
 // when every one is complete are they moved into place. A failure before commit() leaves
 // every target as it was; the destructor removes what was staged and not committed.
 #include <filesystem>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -21,6 +22,10 @@ class StagedOutputs {
   // cannot, or when the target exists as a different kind (directory versus file) than
   // `directory` says.
   std::filesystem::path stage(const std::filesystem::path& target, bool directory);
+
+  // Stages the file `target` and writes `content` to its temporary; a failure names
+  // `target` and the reason.
+  void writeFile(const std::filesystem::path& target, const std::string& content);
 
   // Moves every staged output over its target. A directory target is replaced whole: the
   // old one is renamed aside, the new one renamed in, the old one removed. Throws
