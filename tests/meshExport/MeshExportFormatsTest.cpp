@@ -6,7 +6,6 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 
 #include "../TestFiles.hpp"
@@ -16,7 +15,6 @@
 #include "passageMesh/meshExport/FoamPolyMesh.hpp"
 #include "passageMesh/meshExport/MeshExport.hpp"
 #include "passageMesh/meshExport/Plot3dFile.hpp"
-#include "passageMesh/meshExport/StagedOutputs.hpp"
 #include "passageMesh/meshExport/Su2Cgns.hpp"
 
 using namespace passageMesh;
@@ -178,29 +176,6 @@ TEST(ExportFormats, ParsedInOrderAndBadListsRefused) {
   EXPECT_THROW(parseExportFormats("foam,foam"), InputError);
   EXPECT_THROW(parseExportFormats(""), InputError);
   EXPECT_THROW(parseExportFormats("foam,"), InputError);
-}
-
-TEST(StagedOutputs, DirectoryReplacedWholeOnlyOnCommit) {
-  const fs::path dir = tempFolder("staged");
-  fs::remove_all(dir);
-  fs::create_directories(dir / "target");
-  std::ofstream(dir / "target" / "old") << "old";
-  {
-    StagedOutputs staged;
-    std::ofstream(staged.stage(dir / "target", true) / "new") << "new";
-    std::ofstream(staged.stage(dir / "file.txt", false)) << "text";
-    EXPECT_TRUE(fs::exists(dir / "target" / "old"));
-    EXPECT_FALSE(fs::exists(dir / "file.txt"));
-  }  // not committed: the temporaries are gone, the target unchanged
-  EXPECT_TRUE(fs::exists(dir / "target" / "old"));
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
-  StagedOutputs staged;
-  std::ofstream(staged.stage(dir / "target", true) / "new") << "new";
-  staged.commit();
-  EXPECT_TRUE(fs::exists(dir / "target" / "new"));
-  EXPECT_FALSE(fs::exists(dir / "target" / "old"));
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
-  EXPECT_THROW(staged.stage(dir / "target", false), std::runtime_error);  // a directory, not a file
 }
 
 // Reads the Fortran records of plot3dBinary back (on a little-endian host, as CI's).

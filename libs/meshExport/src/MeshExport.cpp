@@ -5,10 +5,10 @@
 #include <stdexcept>
 
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/core/StagedOutputs.hpp"
 #include "passageMesh/meshExport/BladeEdges.hpp"
 #include "passageMesh/meshExport/FoamPolyMesh.hpp"
 #include "passageMesh/meshExport/Plot3dFile.hpp"
-#include "passageMesh/meshExport/StagedOutputs.hpp"
 #include "passageMesh/meshExport/Su2Cgns.hpp"
 
 namespace passageMesh {

@@ -1,9 +1,7 @@
-#include "passageMesh/meshExport/StagedOutputs.hpp"
+#include "passageMesh/core/StagedOutputs.hpp"
 
 #include <unistd.h>
 
-#include <cerrno>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 
@@ -42,12 +40,7 @@ fs::path StagedOutputs::stage(const fs::path& target, bool directory) {
 }
 
 void StagedOutputs::writeFile(const fs::path& target, const std::string& content) {
-  const fs::path temporary = stage(target, false);
-  errno = 0;
-  std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-  out << content;
-  out.close();  // flushes: a deferred write error shows here
-  if (!out) throw std::runtime_error(target.string() + ": cannot write file (" + fileErrorReason("write error") + ")");
+  fileWithContent(target, content).write(stage(target, false));
 }
 
 void StagedOutputs::commit() {
