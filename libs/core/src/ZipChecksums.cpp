@@ -64,8 +64,9 @@ bool findDirectory(const Bytes& b, Directory& d) {
 
 std::string zipChecksumProblem(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary | std::ios::ate);
-  if (!in) return "cannot be read";
-  std::vector<unsigned char> content(static_cast<std::size_t>(in.tellg()));
+  const std::streamoff fileSize = in.tellg();  // -1 where the path cannot be sized (a directory)
+  if (!in || fileSize < 0) return "cannot be read";
+  std::vector<unsigned char> content(static_cast<std::size_t>(fileSize));
   in.seekg(0);
   if (!in.read(reinterpret_cast<char*>(content.data()), static_cast<std::streamsize>(content.size())))
     return "cannot be read";

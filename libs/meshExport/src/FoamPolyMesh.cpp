@@ -1,9 +1,6 @@
 #include "passageMesh/meshExport/FoamPolyMesh.hpp"
 
-#include <cerrno>
-#include <fstream>
 #include <sstream>
-#include <stdexcept>
 
 #include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/core/NumberFormat.hpp"
@@ -127,14 +124,8 @@ std::vector<std::pair<std::string, std::string>> foamPolyMeshFiles(const Unstruc
 
 void writeFoamPolyMesh(const UnstructuredPassage& passage, double thickness,
                        const std::filesystem::path& directory) {
-  for (const auto& [name, content] : foamPolyMeshFiles(passage, thickness)) {
-    errno = 0;
-    std::ofstream out(directory / name, std::ios::binary | std::ios::trunc);
-    out << content;
-    out.close();
-    if (!out)
-      throw std::runtime_error((directory / name).string() + ": cannot write file (" + fileErrorReason("write error") + ")");
-  }
+  for (const auto& [name, content] : foamPolyMeshFiles(passage, thickness))
+    fileWithContent(directory / name, content).write(directory / name);  // (the directory is staged whole)
 }
 
 }  // namespace passageMesh

@@ -1,8 +1,9 @@
 #pragma once
 // Several outputs, files or whole directories (an OpenFOAM polyMesh), that appear
-// together or not at all (writeFilesAtomically, AtomicFile.hpp, is this for files): each is written to a temporary beside its target, and only
-// when every one is complete are they moved into place. A failure before commit() leaves
-// every target as it was; the destructor removes what was staged and not committed.
+// together or not at all (writeFilesAtomically, AtomicFile.hpp, is this for files): each
+// is written to a temporary beside its target, and only when every one is complete are
+// they moved into place. A failure before commit() leaves every target as it was; the
+// destructor removes what was staged and not committed.
 #include <filesystem>
 #include <string>
 #include <utility>
