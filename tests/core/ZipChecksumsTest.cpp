@@ -81,7 +81,8 @@ TEST(ZipChecksums, ADamagedOrForeignFileIsDescribed) {
   std::string moved = zip;  // the directory's pointer to the member's header is off
   moved[zip.size() - 22 - 6 - 4] = 3;
   EXPECT_NE(zipChecksumProblem(written("moved.zip", moved)).find("member 'a/data' is missing"), std::string::npos);
-  EXPECT_EQ(zipChecksumProblem(testData::tempFolder("zipChecksums") / "none.zip"), "cannot be read");
+  EXPECT_EQ(zipChecksumProblem(testData::tempFolder("zipChecksums") / "none.zip"), "cannot be read (not a file)");
+  EXPECT_EQ(zipChecksumProblem(testData::tempFolder("zipChecksums")), "cannot be read (not a file)");  // a directory
   // Extra fields whose lengths run past their room, or a ZIP64 field with no value where the
   // directory says 0xffffffff: damaged, and nothing read beyond the file.
   const std::string tooLong = littleEndian(0x0001, 2) + littleEndian(200, 2) + littleEndian(0, 8);

@@ -63,8 +63,10 @@ bool findDirectory(const Bytes& b, Directory& d) {
 }  // namespace
 
 std::string zipChecksumProblem(const std::filesystem::path& file) {
+  // (a directory opens, and sizes as anything: refused first)
+  if (!std::filesystem::is_regular_file(file)) return "cannot be read (not a file)";
   std::ifstream in(file, std::ios::binary | std::ios::ate);
-  const std::streamoff fileSize = in.tellg();  // -1 where the path cannot be sized (a directory)
+  const std::streamoff fileSize = in.tellg();
   if (!in || fileSize < 0) return "cannot be read";
   std::vector<unsigned char> content(static_cast<std::size_t>(fileSize));
   in.seekg(0);
