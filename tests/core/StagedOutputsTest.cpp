@@ -34,3 +34,34 @@ TEST(StagedOutputs, DirectoryReplacedWholeOnlyOnCommit) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
   EXPECT_THROW(staged.stage(dir / "target", false), std::runtime_error);  // a directory, not a file
 }
+
+TEST(StagedOutputs, AFileWriterWritesItsTemporaryAndAFailureLeavesEveryTargetAsItWas) {
+  const fs::path dir = tempFolder("stagedWriter");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "a.txt") << "old a";
+  const auto content = [](const fs::path& file) {
+    std::ifstream in(file);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  fs::path written;
+  const FileWriter fine{dir / "a.txt", [&](const fs::path& temporary) {
+                          written = temporary;
+                          std::ofstream(temporary) << "new a";
+                        }};
+  const FileWriter failing{dir / "b.txt", [](const fs::path&) { throw std::runtime_error("b.txt: no room"); }};
+  {
+    StagedOutputs staged;
+    staged.write(fine);
+    EXPECT_NE(written, dir / "a.txt");  // the writer is given the temporary, not the target
+    EXPECT_EQ(written.parent_path(), dir);
+    EXPECT_THROW(staged.write(failing), std::runtime_error);
+  }
+  EXPECT_EQ(content(dir / "a.txt"), "old a");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  StagedOutputs staged;
+  staged.write(fine);
+  staged.commit();
+  EXPECT_EQ(content(dir / "a.txt"), "new a");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}

@@ -40,8 +40,10 @@ fs::path StagedOutputs::stage(const fs::path& target, bool directory) {
 }
 
 void StagedOutputs::writeFile(const fs::path& target, const std::string& content) {
-  fileWithContent(target, content).write(stage(target, false));
+  write(fileWithContent(target, content));
 }
+
+void StagedOutputs::write(const FileWriter& writer) { writer.write(stage(writer.file, false)); }
 
 void StagedOutputs::commit() {
   for (const Entry& e : entries_)

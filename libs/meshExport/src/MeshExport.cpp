@@ -57,7 +57,7 @@ std::vector<fs::path> exportMesh(const StructuredMesh& mesh, const fs::path& cas
       }
       case ExportFormat::su2cgns: {
         const fs::path su2Mesh = fs::path("mesh") / "passageSU2.cgns", config = fs::path("mesh") / "passageSU2.cfg";
-        writeSu2Cgns(passage, staged.stage(caseDir / su2Mesh, false), caseDir / su2Mesh);
+        staged.write(su2CgnsFileWriter(passage, caseDir / su2Mesh));
         staged.writeFile(caseDir / config, su2ConfigFragment(passage, su2Mesh.filename().string()));
         written.insert(written.end(), {su2Mesh, config});
         break;

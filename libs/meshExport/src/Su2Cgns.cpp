@@ -15,35 +15,10 @@ namespace passageMesh {
 
 namespace {
 
-// An open CGNS file that is closed on every path out.
-class OpenCgns {
- public:
-  OpenCgns(const std::filesystem::path& file, std::string label) : label_(std::move(label)) {
-    prepareCgnsLibrary();
-    call(cg_open(file.c_str(), CG_MODE_WRITE, &fn_), "open");
-  }
-  ~OpenCgns() { if (fn_ >= 0) cg_close(fn_); }
-  OpenCgns(const OpenCgns&) = delete;
-  OpenCgns& operator=(const OpenCgns&) = delete;
-  void call(int status, const std::string& what) const {
-    if (status != CG_OK) throw std::runtime_error(label_ + ": CGNS " + what + " failed: " + cg_get_error());
-  }
-  void close() {
-    const int f = fn_;
-    fn_ = -1;
-    call(cg_close(f), "close");
-  }
-  int fn() const { return fn_; }
-
- private:
-  std::string label_;
-  int fn_ = -1;
-};
-
 // The periodic pair as the CGNS standard describes it (SU2 itself reads the config): a
 // 1-to-1 abutting connection from the periodicLower nodes to the periodicUpper nodes of
 // the same zone, with the translation lower -> upper as its periodic property.
-void writePeriodicConnection(const OpenCgns& f, int base, int zone, const UnstructuredPassage& passage) {
+void writePeriodicConnection(const CgnsOutputFile& f, int base, int zone, const UnstructuredPassage& passage) {
   const EdgePatch* lower = nullptr;
   const EdgePatch* upper = nullptr;
   for (const EdgePatch& p : passage.patches) {
@@ -71,7 +46,7 @@ void writePeriodicConnection(const OpenCgns& f, int base, int zone, const Unstru
     pair(l.p1, same ? u.p1 : u.p0);
   }
   int connection = 0;
-  f.call(cg_conn_write(f.fn(), base, zone, "periodic", CGNS_ENUMV(Vertex), CGNS_ENUMV(Abutting1to1),
+  f.check(cg_conn_write(f.fn(), base, zone, "periodic", CGNS_ENUMV(Vertex), CGNS_ENUMV(Abutting1to1),
                        CGNS_ENUMV(PointList), static_cast<cgsize_t>(points.size()), points.data(), "passage",
                        CGNS_ENUMV(Unstructured), CGNS_ENUMV(PointListDonor), CGNS_ENUMV(Integer),
                        static_cast<cgsize_t>(donors.size()), donors.data(), &connection),
@@ -79,46 +54,46 @@ void writePeriodicConnection(const OpenCgns& f, int base, int zone, const Unstru
   const float centre[2] = {0, 0}, angle[2] = {0, 0};
   const float translation[2] = {static_cast<float>(passage.translation.x()),
                                 static_cast<float>(passage.translation.y())};
-  f.call(cg_conn_periodic_write(f.fn(), base, zone, connection, centre, angle, translation),
+  f.check(cg_conn_periodic_write(f.fn(), base, zone, connection, centre, angle, translation),
          "periodic translation");
   // Units of RotationCenter, RotationAngle, Translation: metre, degree, metre.
   const double exponents[3][5] = {{0, 1, 0, 0, 0}, {0, 0, 0, 0, 1}, {0, 1, 0, 0, 0}};
   for (int k = 0; k < 3; ++k) {
-    f.call(cg_goto(f.fn(), base, "Zone_t", zone, "ZoneGridConnectivity_t", 1, "GridConnectivity_t", connection,
+    f.check(cg_goto(f.fn(), base, "Zone_t", zone, "ZoneGridConnectivity_t", 1, "GridConnectivity_t", connection,
                    "GridConnectivityProperty_t", 1, "Periodic_t", 1, "DataArray_t", k + 1, "end"),
            "goto periodic data");
-    f.call(cg_exponents_write(CGNS_ENUMV(RealDouble), exponents[k]), "periodic exponents");
+    f.check(cg_exponents_write(CGNS_ENUMV(RealDouble), exponents[k]), "periodic exponents");
   }
 }
 
-}  // namespace
-
-void writeSu2Cgns(const UnstructuredPassage& passage, const std::filesystem::path& file,
-                  const std::filesystem::path& errorName) {
-  OpenCgns f(file, (errorName.empty() ? file : errorName).string());
+// The zone, its sections and the periodic connection, written to `file`; errors name
+// `label` (the target of the temporary being written).
+void writeSu2Zone(const UnstructuredPassage& passage, const std::filesystem::path& file,
+                  const std::string& label) {
+  CgnsOutputFile f(file, label);
   int base = 0, zone = 0, coordinate = 0, section = 0;
-  f.call(cg_base_write(f.fn(), "Base", 2, 2, &base), "base");
-  f.call(cg_goto(f.fn(), base, "end"), "goto base");
-  f.call(cg_dataclass_write(CGNS_ENUMV(Dimensional)), "DataClass");
-  f.call(cg_units_write(CGNS_ENUMV(Kilogram), CGNS_ENUMV(Meter), CGNS_ENUMV(Second), CGNS_ENUMV(Kelvin),
+  f.check(cg_base_write(f.fn(), "Base", 2, 2, &base), "base");
+  f.check(cg_goto(f.fn(), base, "end"), "goto base");
+  f.check(cg_dataclass_write(CGNS_ENUMV(Dimensional)), "DataClass");
+  f.check(cg_units_write(CGNS_ENUMV(Kilogram), CGNS_ENUMV(Meter), CGNS_ENUMV(Second), CGNS_ENUMV(Kelvin),
                         CGNS_ENUMV(Degree)), "units");
   cgsize_t size[3] = {static_cast<cgsize_t>(passage.points.size()), static_cast<cgsize_t>(passage.cells.size()), 0};
-  f.call(cg_zone_write(f.fn(), base, "passage", size, CGNS_ENUMV(Unstructured), &zone), "zone");
+  f.check(cg_zone_write(f.fn(), base, "passage", size, CGNS_ENUMV(Unstructured), &zone), "zone");
   for (int axis = 0; axis < 2; ++axis) {
     std::vector<double> values;
     for (const auto& p : passage.points) values.push_back(p[axis]);
     const char* name = axis == 0 ? "CoordinateX" : "CoordinateY";
-    f.call(cg_coord_write(f.fn(), base, zone, CGNS_ENUMV(RealDouble), name, values.data(), &coordinate), name);
-    f.call(cg_goto(f.fn(), base, "Zone_t", zone, "GridCoordinates_t", 1, "DataArray_t", coordinate, "end"),
+    f.check(cg_coord_write(f.fn(), base, zone, CGNS_ENUMV(RealDouble), name, values.data(), &coordinate), name);
+    f.check(cg_goto(f.fn(), base, "Zone_t", zone, "GridCoordinates_t", 1, "DataArray_t", coordinate, "end"),
            "goto coordinate");
     const double lengthExponent[5] = {0, 1, 0, 0, 0};
-    f.call(cg_exponents_write(CGNS_ENUMV(RealDouble), lengthExponent), "exponents");
+    f.check(cg_exponents_write(CGNS_ENUMV(RealDouble), lengthExponent), "exponents");
   }
   std::vector<cgsize_t> quads;
   for (const auto& c : passage.cells)
     for (const int p : c) quads.push_back(p + 1);  // CGNS numbers from 1
   cgsize_t last = static_cast<cgsize_t>(passage.cells.size());
-  f.call(cg_section_write(f.fn(), base, zone, "cells", CGNS_ENUMV(QUAD_4), 1, last, 0, quads.data(), &section),
+  f.check(cg_section_write(f.fn(), base, zone, "cells", CGNS_ENUMV(QUAD_4), 1, last, 0, quads.data(), &section),
          "section cells");
   for (const EdgePatch& p : passage.patches) {
     std::vector<cgsize_t> bars;
@@ -128,11 +103,23 @@ void writeSu2Cgns(const UnstructuredPassage& passage, const std::filesystem::pat
     }
     const cgsize_t first = last + 1;
     last += static_cast<cgsize_t>(p.edges.size());
-    f.call(cg_section_write(f.fn(), base, zone, p.name.c_str(), CGNS_ENUMV(BAR_2), first, last, 0, bars.data(),
+    f.check(cg_section_write(f.fn(), base, zone, p.name.c_str(), CGNS_ENUMV(BAR_2), first, last, 0, bars.data(),
                             &section), "section " + p.name);
   }
   writePeriodicConnection(f, base, zone, passage);
   f.close();
+}
+
+}  // namespace
+
+FileWriter su2CgnsFileWriter(const UnstructuredPassage& passage, const std::filesystem::path& file) {
+  return {file, [&passage, label = file.string()](const std::filesystem::path& temporary) {
+            writeSu2Zone(passage, temporary, label);
+          }};
+}
+
+void writeSu2Cgns(const UnstructuredPassage& passage, const std::filesystem::path& file) {
+  writeFilesAtomically({su2CgnsFileWriter(passage, file)});
 }
 
 std::string su2ConfigFragment(const UnstructuredPassage& passage, const std::string& meshFileName) {

@@ -271,17 +271,16 @@ void ActorCritic::load(torch::serialize::InputArchive& archive) {
     else
       n.restartAverage();
   }
-  if (const std::string bad = nonFiniteWeight(); !bad.empty()) throw std::runtime_error(bad + " holds NaN or infinity");
+  if (const std::string problem = nonFiniteWeightProblem(); !problem.empty()) throw std::runtime_error(problem);
 }
 
-std::string ActorCritic::nonFiniteWeight() const {
+std::string ActorCritic::nonFiniteWeightProblem() const {
   const Networks& n = *networks_;
   const std::pair<const char*, const FullyConnected*> networks[] = {
       {"actor", &n.actor}, {"critic", &n.critic}, {"validity", &n.validity}, {"averaged actor", &n.averaged}};
   for (const auto& [what, network] : networks) {
     if (!*network) continue;
-    const std::string bad = (*network)->nonFiniteParameter();
-    if (!bad.empty()) return std::string("the ") + what + "'s " + bad;
+    if (std::string problem = passageMesh::nonFiniteWeightProblem(*network, what); !problem.empty()) return problem;
   }
   return "";
 }

@@ -102,8 +102,8 @@ void expectText(const Dictionary& d, const std::string& key, const std::string& 
 
 void writePolicyFiles(const std::filesystem::path& xmlFile, const ActorCritic& learner,
                       const PolicyStateScaling& scaling, const PolicyProvenance& provenance) {
-  if (const std::string bad = learner.nonFiniteWeight(); !bad.empty())
-    throw std::runtime_error(xmlFile.string() + ": not written: " + bad + " holds NaN or infinity");
+  if (const std::string problem = learner.nonFiniteWeightProblem(); !problem.empty())
+    throw std::runtime_error(xmlFile.string() + ": not written: " + problem);
   std::filesystem::path actorFile = xmlFile;
   actorFile.replace_extension(".pt");
   learner.saveActor(actorFile);
@@ -278,9 +278,8 @@ Policy::Actor Policy::Actor::load(const Dictionary& d, const std::filesystem::pa
     throw InputError(actorFile.string(), 0, "not an actor of the layout " + xmlFile.filename().string() +
                                                 " describes (" + what + ")");
   }
-  const std::string bad = a.network->nonFiniteParameter();
-  if (!bad.empty())
-    throw InputError(actorFile.string(), 0, "the actor's " + bad + " holds NaN or infinity (a diverged run or a corrupt file)");
+  if (const std::string problem = nonFiniteWeightProblem(a.network, "actor"); !problem.empty())
+    throw InputError(actorFile.string(), 0, problem + " (a diverged run or a corrupt file)");
   a.network->eval();
   return a;
 }

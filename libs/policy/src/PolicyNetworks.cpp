@@ -86,6 +86,11 @@ std::string FullyConnectedImpl::nonFiniteParameter() const {
   return "";
 }
 
+std::string nonFiniteWeightProblem(const FullyConnected& network, const std::string& networkName) {
+  const std::string bad = network->nonFiniteParameter();
+  return bad.empty() ? "" : "the " + networkName + "'s " + bad + " holds NaN or infinity";
+}
+
 void FullyConnectedImpl::dropOutputGradients(const std::vector<int>& outputs) {
   torch::NoGradGuard noGrad;
   auto all = parameters();

@@ -283,9 +283,9 @@ ValidationRecord PolicyTrainer::validateCurrentPolicy() const {
 
 void PolicyTrainer::throwDiverged() const {
   // Before the batch's meshes and before the next checkpoint: the last one written is kept.
-  const std::string weight = learner_.nonFiniteWeight();
+  const std::string problem = learner_.nonFiniteWeightProblem();
   throw std::runtime_error("the learner diverged by episode " + std::to_string(episode_) + ": " +
-                           (weight.empty() ? "the actor's actions are not numbers" : weight + " holds NaN or infinity") +
+                           (problem.empty() ? "the actor's actions are not numbers" : problem) +
                            " (lower <actorLearningRate> or <criticLearningRate>; the last checkpoint is kept as "
                            "it was)");
 }
@@ -333,7 +333,7 @@ bool PolicyTrainer::run(const std::atomic<bool>* stop, const Events& events) {
 }
 
 void PolicyTrainer::saveCheckpoint(const std::filesystem::path& file) const {
-  if (!learner_.nonFiniteWeight().empty()) throwDiverged();  // the last checkpoint stays sound
+  if (!learner_.nonFiniteWeightProblem().empty()) throwDiverged();  // the last checkpoint stays sound
   torch::serialize::OutputArchive archive;
   archive.write("format", c10::IValue(std::string(checkpointFormat)));
   archive.write("layout", c10::IValue(layoutText(learner_.layout())));

@@ -1,6 +1,10 @@
 #include "passageMesh/structured/CgnsLibrary.hpp"
 
+#include <cgnslib.h>
 #include <dlfcn.h>
+
+#include <stdexcept>
+#include <utility>
 
 namespace passageMesh {
 
@@ -16,6 +20,26 @@ void prepareCgnsLibrary() {
     return true;
   }();
   static_cast<void>(prepared);
+}
+
+CgnsOutputFile::CgnsOutputFile(const std::filesystem::path& path, std::string label)
+    : label_(std::move(label)) {
+  prepareCgnsLibrary();
+  check(cg_open(path.c_str(), CG_MODE_WRITE, &fn_), "open");
+}
+
+CgnsOutputFile::~CgnsOutputFile() {
+  if (fn_ >= 0) cg_close(fn_);
+}
+
+void CgnsOutputFile::check(int status, const std::string& what) const {
+  if (status != CG_OK) throw std::runtime_error(label_ + ": CGNS " + what + " failed: " + cg_get_error());
+}
+
+void CgnsOutputFile::close() {
+  const int f = fn_;
+  fn_ = -1;
+  check(cg_close(f), "close");
 }
 
 }  // namespace passageMesh

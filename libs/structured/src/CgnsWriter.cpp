@@ -168,38 +168,9 @@ void validateConnection(const StructuredMesh& mesh, const BlockConnection& c, do
 
 // --- writing ---
 
-class CgnsFile {
- public:
-  CgnsFile(const std::filesystem::path& path, std::string label) : label_(std::move(label)) {
-    prepareCgnsLibrary();
-    check(cg_open(path.c_str(), CG_MODE_WRITE, &fn_), "open");
-    open_ = true;
-  }
-  ~CgnsFile() {
-    if (open_) cg_close(fn_);
-  }
-  CgnsFile(const CgnsFile&) = delete;
-  CgnsFile& operator=(const CgnsFile&) = delete;
-
-  void close() {
-    open_ = false;
-    check(cg_close(fn_), "close");
-  }
-  void check(int status, const std::string& what) const {
-    if (status != CG_OK)
-      throw std::runtime_error(label_ + ": CGNS " + what + " failed: " + cg_get_error());
-  }
-  int fn() const { return fn_; }
-
- private:
-  std::string label_;
-  int fn_ = -1;
-  bool open_ = false;
-};
-
 // Units on the base, and on each coordinate array its class and [length]^1, so that
 // readers (and cgnscheck) can tell the coordinates are in metres.
-void writeBase(CgnsFile& f, int& base) {
+void writeBase(CgnsOutputFile& f, int& base) {
   f.check(cg_base_write(f.fn(), "Base", 2, 2, &base), "base");
   f.check(cg_goto(f.fn(), base, "end"), "goto base");
   f.check(cg_dataclass_write(CGNS_ENUMV(Dimensional)), "base DataClass");
@@ -208,7 +179,7 @@ void writeBase(CgnsFile& f, int& base) {
           "base units");
 }
 
-void writeZone(CgnsFile& f, int base, const StructuredBlock& b) {
+void writeZone(CgnsOutputFile& f, int base, const StructuredBlock& b) {
   const cgsize_t size[6] = {b.ni, b.nj, b.ni - 1, b.nj - 1, 0, 0};
   int zone = 0;
   f.check(cg_zone_write(f.fn(), base, b.name.c_str(), size, CGNS_ENUMV(Structured), &zone),
@@ -241,7 +212,7 @@ CGNS_ENUMT(BCType_t) bcTypeOf(PatchType type) {
   throw std::invalid_argument("unknown patch type");
 }
 
-void writeFamilies(CgnsFile& f, int base, const StructuredMesh& mesh) {
+void writeFamilies(CgnsOutputFile& f, int base, const StructuredMesh& mesh) {
   std::set<std::string> written;
   for (const BoundaryPatch& p : mesh.patches) {
     if (!written.insert(p.name).second) continue;
@@ -252,7 +223,7 @@ void writeFamilies(CgnsFile& f, int base, const StructuredMesh& mesh) {
   }
 }
 
-void writePatches(CgnsFile& f, int base, const StructuredMesh& mesh) {
+void writePatches(CgnsOutputFile& f, int base, const StructuredMesh& mesh) {
   const std::vector<std::string> names = bcNames(mesh);
   for (std::size_t n = 0; n < mesh.patches.size(); ++n) {
     const BoundaryPatch& p = mesh.patches[n];
@@ -272,7 +243,7 @@ void writePatches(CgnsFile& f, int base, const StructuredMesh& mesh) {
 
 // cgnscheck warns about arrays without dimensional exponents, and Periodic_t's arrays
 // (two lengths and an angle) do not get them from cg_1to1_periodic_write.
-void writePeriodicExponents(CgnsFile& f, int base, int zone, int index, const std::string& name) {
+void writePeriodicExponents(CgnsOutputFile& f, int base, int zone, int index, const std::string& name) {
   for (const char* array : {"RotationCenter", "RotationAngle", "Translation"}) {
     const bool isAngle = std::string(array) == "RotationAngle";
     const float exponents[5] = {0, isAngle ? 0.0f : 1.0f, 0, 0, isAngle ? 1.0f : 0.0f};
@@ -288,7 +259,7 @@ void writePeriodicExponents(CgnsFile& f, int base, int zone, int index, const st
 
 // One GridConnectivity1to1_t in `own`'s zone. The own range is made ascending (swapping
 // both ends of both ranges keeps node k paired with node k).
-void writeOneToOne(CgnsFile& f, int base, const StructuredMesh& mesh, const std::string& name,
+void writeOneToOne(CgnsOutputFile& f, int base, const StructuredMesh& mesh, const std::string& name,
                    NodeRange own, NodeRange donor, bool periodic,
                    const Eigen::Vector2d& translation) {
   Face ownFace = faceOf(mesh, own, name);
@@ -317,7 +288,7 @@ void writeOneToOne(CgnsFile& f, int base, const StructuredMesh& mesh, const std:
   writePeriodicExponents(f, base, own.block + 1, index, name);
 }
 
-void writeContent(CgnsFile& f, const StructuredMesh& mesh) {
+void writeContent(CgnsOutputFile& f, const StructuredMesh& mesh) {
   int base = 0;
   writeBase(f, base);
   for (const StructuredBlock& b : mesh.blocks) writeZone(f, base, b);
@@ -365,7 +336,7 @@ void validateStructuredMesh(const StructuredMesh& mesh) {
 FileWriter cgnsFileWriter(const StructuredMesh& mesh, const std::filesystem::path& file) {
   validateStructuredMesh(mesh);
   return {file, [&mesh, label = file.string()](const std::filesystem::path& temporary) {
-            CgnsFile f(temporary, label);
+            CgnsOutputFile f(temporary, label);
             writeContent(f, mesh);
           }};
 }

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "passageMesh/core/AtomicFile.hpp"
+
 namespace passageMesh {
 
 class StagedOutputs {
@@ -27,6 +29,10 @@ class StagedOutputs {
   // Stages the file `target` and writes `content` to its temporary; a failure names
   // `target` and the reason.
   void writeFile(const std::filesystem::path& target, const std::string& content);
+
+  // Stages `writer.file` and lets the writer write its temporary (a file a library writes
+  // itself, such as CGNS); the writer's errors name `writer.file`.
+  void write(const FileWriter& writer);
 
   // Moves every staged output over its target. A directory target is replaced whole: the
   // old one is renamed aside, the new one renamed in, the old one removed. Throws

@@ -14,15 +14,19 @@
 #include <filesystem>
 #include <string>
 
+#include "passageMesh/core/AtomicFile.hpp"
 #include "passageMesh/meshExport/UnstructuredPassage.hpp"
 
 namespace passageMesh {
 
-// Throws std::runtime_error naming the file (and the CGNS error) when it cannot be
-// written; `errorName`, where given, is the file the error names (the target of a staged
-// temporary). Not thread-safe: the CGNS library has global state.
-void writeSu2Cgns(const UnstructuredPassage& passage, const std::filesystem::path& file,
-                  const std::filesystem::path& errorName = {});
+// The writer of `file` for writeFilesAtomically or StagedOutputs::write (it refers to
+// `passage`, which must outlive it); its errors name `file` and the CGNS error. Not
+// thread-safe: the CGNS library has global state.
+FileWriter su2CgnsFileWriter(const UnstructuredPassage& passage, const std::filesystem::path& file);
+
+// Writes `file` through a temporary renamed over it; throws std::runtime_error naming the
+// file when it cannot.
+void writeSu2Cgns(const UnstructuredPassage& passage, const std::filesystem::path& file);
 
 // MARKER_PERIODIC, MARKER_HEATFLUX (adiabatic walls), MARKER_INLET/OUTLET name lists as
 // comments for the user to complete, MESH_FILENAME and MESH_FORMAT= CGNS.

@@ -103,9 +103,10 @@ class ActorCritic {
   void load(torch::serialize::InputArchive& archive);
   // The same as bytes in memory (the trainer keeps the best validation's learner so).
   std::string stateBytes() const;
-  // "the critic's layers.0.weight" where a network's weight holds NaN or infinity (a
-  // diverged learner), else "". load() refuses such a state.
-  std::string nonFiniteWeight() const;
+  // "the critic's layers.0.weight holds NaN or infinity" where a network's weight does (a
+  // diverged learner), else "" (nonFiniteWeightProblem, PolicyNetworks.hpp). load()
+  // refuses such a state.
+  std::string nonFiniteWeightProblem() const;
   void loadStateBytes(const std::string& bytes);
   // The delivered actor (actDelivered) alone, with LibTorch's own serialisation (Python:
   // torch.jit.load), written atomically (PolicyFile.hpp writes it with its description).

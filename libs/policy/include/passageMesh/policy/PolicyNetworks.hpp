@@ -51,6 +51,11 @@ class FullyConnectedImpl : public torch::nn::Module {
 };
 TORCH_MODULE(FullyConnected);
 
+// "the <networkName>'s layers.2.weight holds NaN or infinity" for the first weight or bias
+// of `network` that does, or "" when every one is finite: the one wording of that refusal
+// (loading a policy or checkpoint, writing one, a diverged learner).
+std::string nonFiniteWeightProblem(const FullyConnected& network, const std::string& networkName);
+
 // pi(s): state -> action in [-1, 1].
 FullyConnected makeActor(const NetworkLayout& layout);
 // Q(s, a): the concatenated state and action -> expected reward.

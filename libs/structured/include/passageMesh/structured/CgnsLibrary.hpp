@@ -2,6 +2,9 @@
 // The CGNS library's process-wide settings, shared by every reader and writer of CGNS files
 // (libs/structured, libs/meshExport).
 
+#include <filesystem>
+#include <string>
+
 namespace passageMesh {
 
 // Call before the first call into the CGNS library (cg_open, cg_is_cgns: each starts HDF5,
@@ -12,5 +15,26 @@ namespace passageMesh {
 // exit and the tool ends with its own error code; files closed by cg_close, as every
 // successful read and write closes them, are unaffected. Only the first call does anything.
 void prepareCgnsLibrary();
+
+// A CGNS file open for writing, closed on every path out. Every failing call throws
+// std::runtime_error "<label>: CGNS <what> failed: <CGNS's message>", the label naming the
+// file the user knows (the target, when the path written is its staged temporary).
+class CgnsOutputFile {
+ public:
+  CgnsOutputFile(const std::filesystem::path& path, std::string label);
+  ~CgnsOutputFile();
+  CgnsOutputFile(const CgnsOutputFile&) = delete;
+  CgnsOutputFile& operator=(const CgnsOutputFile&) = delete;
+
+  // Throws as above when `status` (a CGNS return code) is not CG_OK.
+  void check(int status, const std::string& what) const;
+  // Closes the file, checking that the close succeeded (HDF5 writes at the close).
+  void close();
+  int fn() const { return fn_; }  // the CGNS file index
+
+ private:
+  std::string label_;
+  int fn_ = -1;
+};
 
 }  // namespace passageMesh
