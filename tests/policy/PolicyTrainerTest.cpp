@@ -159,7 +159,7 @@ TEST(PolicyTrainer, PassageTrainingGivesTheSameWeightsOnOneOrTwoThreads) {
 // The validation curve scores what policyMesh will do with the weights: one forward pass
 // per state. A batched pass rounds differently in float (about 1e-7), and on a mesh that
 // can flip a passage across a validity edge (a resumed run logged 0.4996 for weights
-// whose one-state passes score 0.4923, docs/policy.md); the toy reward, continuous in the
+// whose one-state passes score 0.4923, docs/policy-history.md); the toy reward, continuous in the
 // action, sees any such difference.
 TEST(PolicyTrainer, TheValidationScoresTheActionsOfOneStateForwardPasses) {
   const ToyEnvironment toy(24, 8, 3);

@@ -98,7 +98,7 @@ struct HohMesh {
   // (parametersMoved).
   MeshingParameters parameters;
   // Non-empty when the parameters were moved to mesh the passage (HohMeshOptions::
-  // outerLoopRoom, clusteringMoves): each one changed, old -> new, and why.
+  // outerLoopRoom, clusteringMoves, splitMoves): each one changed, old -> new, and why.
   std::string parametersMoved;
   // Non-empty when the mesh is a later try (HohMeshOptions) or its parameters were moved:
   // why the first, with the parameters asked for and every orthogonality control, was

@@ -40,7 +40,7 @@ namespace passageMesh {
 struct OBlockPolishReport;
 
 struct OBlockPolishOptions {
-  int iterations = 25;       // Levenberg-Marquardt steps a pass (docs/elliptic-smoothing.md: 25 vs 60)
+  int iterations = 25;       // Levenberg-Marquardt steps a pass (docs/elliptic-smoothing.md "Polish")
   int patience = 5;          // once Q has risen, stop after this many steps without a new
                              // highest Q (0: never)
   int heldWallRows = 3;      // rows 1 .. heldWallRows kept with the wall row, except that
