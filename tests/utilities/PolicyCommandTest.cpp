@@ -150,6 +150,8 @@ TEST(PolicyMeshCommand, MeshesWithATrainedPolicyAndRefusesBadPolicyFiles) {
   // An untrained policy may well fold the mesh; either way the parameters are printed and
   // the outcome is reported on one line. meshDict.xml is written with the mesh, or not at all.
   EXPECT_NE(r.out.find("forward pass"), std::string::npos) << r.out;
+  // What the file records of its training: the run's episodes and its validation.
+  EXPECT_NE(r.out.find("(32 episodes in the run that wrote it, validation mean reward "), std::string::npos) << r.out;
   if (r.exitCode == 0) {
     EXPECT_NE(r.out.find("policyMesh: Q = "), std::string::npos) << r.out;
     EXPECT_TRUE(fs::exists(dir / "mesh" / "passage.cgns"));
@@ -167,7 +169,8 @@ TEST(PolicyMeshCommand, MeshesWithATrainedPolicyAndRefusesBadPolicyFiles) {
   const fs::path twice = meshCase("policyMeshEnsemble");
   const RunResult e = runTool(policyMesh, twice, "-policy '" + ensembleXml.string() + "'");
   EXPECT_EQ(e.exitCode, r.exitCode) << e.err;
-  EXPECT_NE(e.out.find("an ensemble of 2 trained in 64 episodes"), std::string::npos) << e.out;
+  // Not "trained in 64 episodes": members' episode counts do not add up to a training.
+  EXPECT_NE(e.out.find("(an ensemble of 2 members)"), std::string::npos) << e.out;
   const auto parameterLines = [](const std::string& out) {  // "    name value", as printed
     std::string lines;
     std::istringstream in(out);

@@ -22,6 +22,7 @@
 
 #include "passageMesh/core/CommandLine.hpp"
 #include "passageMesh/core/InterruptFlag.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 #include "passageMesh/mesh/HohMesh.hpp"
 #include "passageMesh/passage/PassageCase.hpp"
 #include "passageMesh/policy/Policy.hpp"
@@ -64,11 +65,17 @@ int main(int argc, char* argv[]) {
       built = buildHohMesh(input.blade, input.condition, input.parameters);
     }
 
-    const std::string members =
-        policy.memberCount() > 1 ? "an ensemble of " + std::to_string(policy.memberCount()) + " trained in " : "";
-    std::printf("policyMesh: policy %s (%s%ld episodes), forward pass %.3f ms (the first: LibTorch starting up); meshing parameters "
+    // trainedEpisodes counts the run that wrote a policy file only (a run started with
+    // -actorFrom does not add its start's), so an ensemble is described by its validation.
+    const PolicyProvenance& provenance = policy.provenance();
+    std::string about = policy.memberCount() > 1
+                            ? "an ensemble of " + std::to_string(policy.memberCount()) + " members"
+                            : std::to_string(provenance.episodes) + " episodes in the run that wrote it";
+    if (provenance.validationMeanReward != 0)
+      about += ", validation mean reward " + formatRounded(provenance.validationMeanReward);
+    std::printf("policyMesh: policy %s (%s), forward pass %.3f ms (the first: LibTorch starting up); meshing parameters "
                 "(yIn, yOut in metres; written to system/meshDict.xml with the mesh):\n",
-                policyFile.c_str(), members.c_str(), policy.provenance().episodes, 1e3 * forwardSeconds);
+                policyFile.c_str(), about.c_str(), 1e3 * forwardSeconds);
     const auto values = input.parameters.toArray();
     for (int k = 0; k < MeshingParameters::size; ++k)
       std::printf("    %-12s %.17g\n", MeshingParameters::names()[k].c_str(), values[k]);
