@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "AnnulusTestData.hpp"
 #include "passageMesh/mesh/ThompsonMultigrid.hpp"
@@ -65,6 +66,22 @@ TEST(ThompsonSolver, RefusesBadSizes) {
   o.y.assign(9, 0.0);
   GridControl none;
   EXPECT_THROW(solveThompson(o, none), std::invalid_argument);
+}
+
+// The convergence measure of a grid with one node not a number is not a number, wherever
+// the node lies (it ends iterateUntilConverged's loop as failed): the residual's running
+// maximum must not let a later finite node replace it.
+TEST(ThompsonSolver, ResidualOfAGridWithANaNNodeIsNotANumber) {
+  const StructuredBlock clean = annulus(32, 9);
+  const GridControl none;
+  const MovingRows rows;
+  const double r = thompsonResidual(clean, none, rows);
+  EXPECT_TRUE(std::isfinite(r)) << r;
+  for (const auto& [i, j] : {std::pair{16, 1}, std::pair{0, 4}, std::pair{30, 7}}) {
+    StructuredBlock o = clean;
+    o.xAt(i, j) = std::nan("");
+    EXPECT_TRUE(std::isnan(thompsonResidual(o, none, rows))) << "NaN at node (" << i << ", " << j << ")";
+  }
 }
 
 // Even and odd loops, rows with and without a one-row last interval, one or two fixed rows

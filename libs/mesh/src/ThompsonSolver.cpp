@@ -252,7 +252,10 @@ double thompsonResidual(const StructuredBlock& o, const GridControl& control,
       // (a NaN, an infinity or b = 0 go on to the exact measure, as before)
       if (b > 0 && b <= std::numeric_limits<double>::max() && a <= threshold * b) continue;
       const double r = std::sqrt(a / std::abs(jacobian)) / scale;
-      if (!(r <= largest)) {  // also catches NaN
+      // A node not a number fails the grid whatever the others say; kept as the running
+      // maximum, a later finite node would replace it (NaN compares false to everything).
+      if (std::isnan(r)) return r;
+      if (!(r <= largest)) {
         largest = r;
         threshold = largest * largest * (1 - 1e-9);
       }

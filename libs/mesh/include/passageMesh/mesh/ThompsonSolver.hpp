@@ -86,7 +86,8 @@ void thompsonResidualField(const StructuredBlock& oBlock, const GridControl& con
                            const MovingRows& rows, std::vector<double>& rx,
                            std::vector<double>& ry);
 
-// The residual measure of ThompsonReport over the moving rows, for the grid as it is.
+// The residual measure of ThompsonReport over the moving rows, for the grid as it is: not a
+// number where any node is (or gives one).
 double thompsonResidual(const StructuredBlock& oBlock, const GridControl& control,
                         const MovingRows& rows);
 
