@@ -69,3 +69,17 @@ TEST(Dictionary, WritesAndReadsBackExactlyWithSections) {
   EXPECT_EQ(back.text("name"), "LS89");
   EXPECT_EQ(back.section("fitReport").scalar("meanDeviation"), 1.0 / 3.0);
 }
+
+// The one number reader of every dictionary and point file: the whole text one finite
+// number, or refused.
+TEST(Dictionary, ParseFiniteDoubleTakesOnlyAWholeFiniteNumber) {
+  double v = 0;
+  EXPECT_TRUE(parseFiniteDouble("1.5", v));
+  EXPECT_EQ(v, 1.5);
+  EXPECT_TRUE(parseFiniteDouble("-2e-3", v));
+  EXPECT_EQ(v, -2e-3);
+  for (const char* bad : {"", "1.5x", "x1", "nan", "NaN", "inf", "-inf", "1e400", "1.5 2", "--1"}) {
+    v = 7;
+    EXPECT_FALSE(parseFiniteDouble(bad, v)) << "'" << bad << "' read as " << v;
+  }
+}

@@ -1,4 +1,5 @@
 #include "passageMesh/core/StagedOutputs.hpp"
+#include "passageMesh/core/AtomicFile.hpp"
 
 #include <gtest/gtest.h>
 
@@ -64,4 +65,28 @@ TEST(StagedOutputs, AFileWriterWritesItsTemporaryAndAFailureLeavesEveryTargetAsI
   staged.commit();
   EXPECT_EQ(content(dir / "a.txt"), "new a");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+// writeFilesAtomically with FileWriters (CGNS, VTK and a meshDict written together): a
+// writer that fails leaves every target as it was and no temporary behind.
+TEST(AtomicFile, AGroupOfFileWritersIsWrittenWholeOrNotAtAll) {
+  const fs::path dir = tempFolder("atomicGroup");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "a.txt") << "old a";
+  const auto content = [](const fs::path& file) {
+    std::ifstream in(file);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  const FileWriter failing{dir / "c.txt", [](const fs::path&) { throw std::runtime_error("c.txt: no room"); }};
+  EXPECT_THROW(writeFilesAtomically({fileWithContent(dir / "a.txt", "new a"), fileWithContent(dir / "sub" / "b.txt", "b"),
+                                     failing}),
+               std::runtime_error);
+  EXPECT_EQ(content(dir / "a.txt"), "old a");
+  EXPECT_FALSE(fs::exists(dir / "sub" / "b.txt"));
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    EXPECT_TRUE(entry.path() == dir / "a.txt" || entry.is_directory()) << entry.path();
+  writeFilesAtomically({fileWithContent(dir / "a.txt", "new a"), fileWithContent(dir / "sub" / "b.txt", "b")});
+  EXPECT_EQ(content(dir / "a.txt"), "new a");
+  EXPECT_EQ(content(dir / "sub" / "b.txt"), "b");
 }

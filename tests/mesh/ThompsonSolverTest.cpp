@@ -6,8 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "AnnulusTestData.hpp"
 #include "passageMesh/mesh/ThompsonMultigrid.hpp"
@@ -82,6 +84,32 @@ TEST(ThompsonSolver, ResidualOfAGridWithANaNNodeIsNotANumber) {
     o.xAt(i, j) = std::nan("");
     EXPECT_TRUE(std::isnan(thompsonResidual(o, none, rows))) << "NaN at node (" << i << ", " << j << ")";
   }
+}
+
+// The loop every solve runs: converged at the tolerance, failed at a residual not a number,
+// stopped where the residual has not halved over the stall window.
+TEST(ThompsonSolver, IterateUntilConvergedStopsAtTheToleranceANaNOrAStall) {
+  const auto run = [](std::vector<double> residuals, int stallWindow) {
+    std::size_t k = 0;
+    return iterateUntilConverged(
+        100, 1e-9, [&] { ++k; }, [&] { return residuals[std::min(k, residuals.size()) - 1]; }, stallWindow);
+  };
+  ThompsonReport r = run({1, 1e-3, 1e-10, 5}, 0);
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.sweeps, 3);
+  EXPECT_EQ(r.residual, 1e-10);
+  r = run({1, std::nan(""), 1e-10}, 0);
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(r.sweeps, 2);
+  r = run({1, 0.9, 0.8, 0.7, 0.6, 0.5}, 3);  // 0.7 is not half of 1: stalled at sweep 4
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(r.sweeps, 4);
+  r = run({1, 0.4, 0.1, 0.04, 0.01, 1e-10}, 3);  // halves within every window
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.sweeps, 6);
+  r = run({1}, 0);  // never below the tolerance: all 100 sweeps
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(r.sweeps, 100);
 }
 
 // Even and odd loops, rows with and without a one-row last interval, one or two fixed rows

@@ -80,21 +80,4 @@ void interpolateDisplacement(const StructuredBlock& before, const StructuredBloc
   }
 }
 
-std::vector<double> interpolateAroundLoop(const std::vector<double>& coarse, const Coarsening& c,
-                                          int fineLoop) {
-  std::vector<double> fine(static_cast<std::size_t>(fineLoop));
-  const int nc = static_cast<int>(coarse.size());
-  for (int i = 0; i < fineLoop; ++i) {
-    if (!c.i) {
-      fine[static_cast<std::size_t>(i)] = coarse[static_cast<std::size_t>(i)];
-    } else if (i % 2 == 0) {
-      fine[static_cast<std::size_t>(i)] = coarse[static_cast<std::size_t>(i / 2)];
-    } else {
-      fine[static_cast<std::size_t>(i)] = 0.5 * (coarse[static_cast<std::size_t>(i / 2)] +
-                                                 coarse[static_cast<std::size_t>((i / 2 + 1) % nc)]);
-    }
-  }
-  return fine;
-}
-
 }  // namespace passageMesh

@@ -137,11 +137,6 @@ std::array<double, MeshingParameters::size> clipArrayToRange(std::array<double, 
 
 }  // namespace
 
-MeshingParameters clipToRange(const MeshingParameters& p, double chord,
-                              std::vector<std::string>* warnings, const std::string& source) {
-  return MeshingParameters::fromArray(clipArrayToRange(p.toArray(), chord, warnings, source));
-}
-
 MeshingParameters readMeshDict(const std::filesystem::path& file, double chord,
                                std::vector<std::string>* warnings) {
   const MeshingParameters defaults = MeshingParameters::defaults(chord);

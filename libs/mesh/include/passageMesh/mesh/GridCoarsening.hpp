@@ -40,8 +40,4 @@ void interpolateDisplacement(const StructuredBlock& before, const StructuredBloc
                              const MovingRows& rows, std::vector<double>& dx,
                              std::vector<double>& dy);
 
-// A per-loop-node value (size coarse loop) at the fine loop nodes, linear in i.
-std::vector<double> interpolateAroundLoop(const std::vector<double>& coarse, const Coarsening& c,
-                                          int fineLoop);
-
 }  // namespace passageMesh

@@ -55,10 +55,6 @@ struct MeshingParameters {
   static std::array<double, size> upperBounds(double chord);
 };
 
-// Clips every parameter into the range box, adding one warning line per clipped value.
-MeshingParameters clipToRange(const MeshingParameters& p, double chord,
-                              std::vector<std::string>* warnings, const std::string& source);
-
 // Reads system/meshDict.xml. A missing file gives the defaults; a missing key takes its
 // default; an unknown key or a malformed value is an InputError; a value outside the range
 // box is clipped with a warning.
