@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
+#include <string>
 
 #include "../TestFiles.hpp"
 
@@ -36,15 +37,26 @@ TEST(StagedOutputs, DirectoryReplacedWholeOnlyOnCommit) {
   EXPECT_THROW(staged.stage(dir / "target", false), std::runtime_error);  // a directory, not a file
 }
 
-TEST(StagedOutputs, AFileWriterWritesItsTemporaryAndAFailureLeavesEveryTargetAsItWas) {
-  const fs::path dir = tempFolder("stagedWriter");
+namespace {
+
+std::string fileText(const fs::path& file) {
+  std::ifstream in(file);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// An empty test folder holding a.txt with "old a".
+fs::path folderWithOldA(const std::string& name) {
+  const fs::path dir = tempFolder(name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "a.txt") << "old a";
-  const auto content = [](const fs::path& file) {
-    std::ifstream in(file);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  };
+  return dir;
+}
+
+}  // namespace
+
+TEST(StagedOutputs, AFileWriterWritesItsTemporaryAndAFailureLeavesEveryTargetAsItWas) {
+  const fs::path dir = folderWithOldA("stagedWriter");
   fs::path written;
   const FileWriter fine{dir / "a.txt", [&](const fs::path& temporary) {
                           written = temporary;
@@ -58,35 +70,28 @@ TEST(StagedOutputs, AFileWriterWritesItsTemporaryAndAFailureLeavesEveryTargetAsI
     EXPECT_EQ(written.parent_path(), dir);
     EXPECT_THROW(staged.write(failing), std::runtime_error);
   }
-  EXPECT_EQ(content(dir / "a.txt"), "old a");
+  EXPECT_EQ(fileText(dir / "a.txt"), "old a");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
   StagedOutputs staged;
   staged.write(fine);
   staged.commit();
-  EXPECT_EQ(content(dir / "a.txt"), "new a");
+  EXPECT_EQ(fileText(dir / "a.txt"), "new a");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
 }
 
 // writeFilesAtomically with FileWriters (CGNS, VTK and a meshDict written together): a
 // writer that fails leaves every target as it was and no temporary behind.
 TEST(AtomicFile, AGroupOfFileWritersIsWrittenWholeOrNotAtAll) {
-  const fs::path dir = tempFolder("atomicGroup");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "a.txt") << "old a";
-  const auto content = [](const fs::path& file) {
-    std::ifstream in(file);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  };
+  const fs::path dir = folderWithOldA("atomicGroup");
   const FileWriter failing{dir / "c.txt", [](const fs::path&) { throw std::runtime_error("c.txt: no room"); }};
   EXPECT_THROW(writeFilesAtomically({fileWithContent(dir / "a.txt", "new a"), fileWithContent(dir / "sub" / "b.txt", "b"),
                                      failing}),
                std::runtime_error);
-  EXPECT_EQ(content(dir / "a.txt"), "old a");
+  EXPECT_EQ(fileText(dir / "a.txt"), "old a");
   EXPECT_FALSE(fs::exists(dir / "sub" / "b.txt"));
   for (const auto& entry : fs::recursive_directory_iterator(dir))
     EXPECT_TRUE(entry.path() == dir / "a.txt" || entry.is_directory()) << entry.path();
   writeFilesAtomically({fileWithContent(dir / "a.txt", "new a"), fileWithContent(dir / "sub" / "b.txt", "b")});
-  EXPECT_EQ(content(dir / "a.txt"), "new a");
-  EXPECT_EQ(content(dir / "sub" / "b.txt"), "b");
+  EXPECT_EQ(fileText(dir / "a.txt"), "new a");
+  EXPECT_EQ(fileText(dir / "sub" / "b.txt"), "b");
 }
