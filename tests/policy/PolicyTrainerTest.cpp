@@ -80,6 +80,18 @@ static std::string resumeError(const PolicyTrainOptions& options, const std::fil
   return "accepted";
 }
 
+// The baseline's fixed action is read as the environment's size: a shorter one is refused
+// (it was read past its end).
+TEST(PolicyTrainer, ValidatingAFixedActionOfTheWrongSizeIsRefused) {
+  const ToyEnvironment toy(24, 8, 3);
+  ThreadRollouts rollouts(1);
+  const PolicyTrainer trainer(smallRun(64), toy, rollouts);
+  EXPECT_THROW(trainer.validateAction(std::vector<double>(7, 0.0)), std::invalid_argument);
+  EXPECT_THROW(trainer.validateAction(std::vector<double>(9, 0.0)), std::invalid_argument);
+  const ValidationRecord fine = trainer.validateAction(std::vector<double>(8, 0.0));
+  EXPECT_GT(fine.passages, 0);
+}
+
 TEST(PolicyTrainer, ACheckpointOfAnotherRunOrACorruptFileIsRefusedWithItsName) {
   const ToyEnvironment toy(24, 8, 3);
   ThreadRollouts rollouts(1);

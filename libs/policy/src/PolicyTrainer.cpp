@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <utility>
 
 #include "passageMesh/core/InputError.hpp"
@@ -263,6 +264,9 @@ void PolicyTrainer::runBatch() {
 }
 
 ValidationRecord PolicyTrainer::validateAction(const std::vector<double>& action) const {
+  if (static_cast<int>(action.size()) != environment_.actionSize())
+    throw std::invalid_argument("validateAction: an action of " + std::to_string(action.size()) +
+                                " values where the environment has " + std::to_string(environment_.actionSize()));
   const int n = static_cast<int>(validationTasks_.size());
   PolicyBatch actions(n, environment_.actionSize());
   for (int i = 0; i < n; ++i)

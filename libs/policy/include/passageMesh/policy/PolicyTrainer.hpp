@@ -110,7 +110,8 @@ class PolicyTrainer {
   const std::vector<LearningRecord>& learningCurve() const { return learning_; }
   const std::vector<ValidationRecord>& validationCurve() const { return validation_; }
   // The validation of a fixed action for every passage (the environment's default action:
-  // the baseline); nothing of the trainer's state changes.
+  // the baseline); nothing of the trainer's state changes. An action of another size than
+  // the environment's is std::invalid_argument.
   ValidationRecord validateAction(const std::vector<double>& action) const;
   // The validation of the current weights (what policyMesh would give on each passage),
   // recorded at the current episode; nothing of the trainer's state changes. The curve
