@@ -57,3 +57,20 @@ TEST(BladeSampler, HalfLogUniformEdgeRadiiMakeSharpEdgesCommonAndStayInTheBox) {
   EXPECT_GT(sharpMixed, 0.12 * n);
   EXPECT_GT(roundMixed, 0.15 * n);  // round edges stay common (expected 0.5 * 0.5 + 0.5 * 0.12 = 0.31)
 }
+
+// The range box holds the edge angles relative to the stagger (so that one box fits blades
+// of every stagger); the two coordinate maps are each other's inverse.
+TEST(BladeParameterRange, RangeCoordinatesHoldTheEdgeAnglesRelativeToTheStagger) {
+  BladeSampler sampler(BladeParameterRange::readDefault(), 5);
+  for (int k = 0; k < 20; ++k) {
+    const BladeParameters p = sampler.next();
+    const auto v = BladeParameterRange::toRangeCoordinates(p);
+    EXPECT_EQ(v[3], p.stagger);
+    EXPECT_DOUBLE_EQ(v[4], p.thetaLe - p.stagger);
+    EXPECT_DOUBLE_EQ(v[5], p.thetaTe - p.stagger);
+    EXPECT_EQ(v[2], p.chord);
+    const auto back = BladeParameterRange::fromRangeCoordinates(v).toArray();
+    const auto original = p.toArray();
+    for (int i = 0; i < BladeParameters::size; ++i) EXPECT_NEAR(back[i], original[i], 1e-12) << i;
+  }
+}

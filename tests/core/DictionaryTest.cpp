@@ -83,3 +83,27 @@ TEST(Dictionary, ParseFiniteDoubleTakesOnlyAWholeFiniteNumber) {
     EXPECT_FALSE(parseFiniteDouble(bad, v)) << "'" << bad << "' read as " << v;
   }
 }
+
+// A section's keys are checked by its reader: an unknown key and a missing required key
+// are InputErrors naming the key (and the keys allowed).
+TEST(Dictionary, CheckKeysAndRequireNameTheKey) {
+  Dictionary d("policyTrainDict", "case/system/policyTrainDict.xml");
+  d.set("episodes", 10.0);
+  d.set("epsiodes", 12.0);
+  EXPECT_NO_THROW(d.checkKeys({"episodes", "epsiodes"}));
+  try {
+    d.checkKeys({"episodes", "seed"});
+    ADD_FAILURE() << "an unknown key was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("epsiodes"), std::string::npos) << what;
+    EXPECT_NE(what.find("seed"), std::string::npos) << what;  // the keys allowed
+  }
+  EXPECT_NO_THROW(d.require({"episodes"}));
+  try {
+    d.require({"episodes", "seed"});
+    ADD_FAILURE() << "a missing key was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("seed"), std::string::npos) << e.what();
+  }
+}

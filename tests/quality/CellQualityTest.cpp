@@ -4,9 +4,11 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "QualityTestData.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
+#include "passageMesh/quality/NodeJacobians.hpp"
 
 using namespace passageMesh;
 using namespace passageMesh::testData;
@@ -69,4 +71,23 @@ TEST(CellQuality, InvertedCellMakesTheMeshInvalid) {
   const MeshQuality bowTie = computeMeshQuality(singleCell({{{0, 0}, {1, 0}, {0, 1}, {1, 1}}}));
   EXPECT_FALSE(bowTie.valid);
   EXPECT_EQ(bowTie.Q, invalidMeshQuality);
+}
+
+// The node Jacobians behind Q_J: on an affine block (x = 2i + j, y = 3j) every difference,
+// central inside and one-sided on the edges, gives the exact J = 6; mirrored, -6.
+TEST(NodeJacobians, AnAffineBlockHasItsJacobianAtEveryNodeEdgesIncluded) {
+  StructuredBlock b;
+  b.ni = 5;
+  b.nj = 4;
+  for (int j = 0; j < b.nj; ++j)
+    for (int i = 0; i < b.ni; ++i) {
+      b.x.push_back(2.0 * i + j);
+      b.y.push_back(3.0 * j);
+    }
+  std::vector<double> jacobian(static_cast<std::size_t>(b.ni * b.nj));
+  nodeJacobians(b, false, nullptr, jacobian.data());
+  for (std::size_t k = 0; k < jacobian.size(); ++k) EXPECT_NEAR(jacobian[k], 6, 1e-12) << "node " << k;
+  for (double& y : b.y) y = -y;
+  nodeJacobians(b, false, nullptr, jacobian.data());
+  for (std::size_t k = 0; k < jacobian.size(); ++k) EXPECT_NEAR(jacobian[k], -6, 1e-12) << "node " << k;
 }
