@@ -1,5 +1,6 @@
-// ArcLengthTable places outer-loop nodes by length along the periodic boundary: the
-// parameter at a length is interpolated linearly between the samples, and clamped.
+// ArcLengthTable places nodes by length (the blade sides' wall nodes, the outer loop's along
+// the periodic boundary): the parameter at a length is interpolated linearly between the
+// samples, and clamped.
 #include "passageMesh/mesh/ArcLengthTable.hpp"
 
 #include <gtest/gtest.h>

@@ -4,8 +4,6 @@
 
 #include <set>
 #include <sstream>
-#include <stdexcept>
-#include <utility>
 #include <vector>
 
 #include "passageMesh/core/NumberFormat.hpp"
@@ -47,28 +45,28 @@ void writePeriodicConnection(const CgnsOutputFile& f, int base, int zone, const 
   }
   int connection = 0;
   f.check(cg_conn_write(f.fn(), base, zone, "periodic", CGNS_ENUMV(Vertex), CGNS_ENUMV(Abutting1to1),
-                       CGNS_ENUMV(PointList), static_cast<cgsize_t>(points.size()), points.data(), "passage",
-                       CGNS_ENUMV(Unstructured), CGNS_ENUMV(PointListDonor), CGNS_ENUMV(Integer),
-                       static_cast<cgsize_t>(donors.size()), donors.data(), &connection),
-         "periodic connection");
+                        CGNS_ENUMV(PointList), static_cast<cgsize_t>(points.size()), points.data(), "passage",
+                        CGNS_ENUMV(Unstructured), CGNS_ENUMV(PointListDonor), CGNS_ENUMV(Integer),
+                        static_cast<cgsize_t>(donors.size()), donors.data(), &connection),
+          "periodic connection");
   const float centre[2] = {0, 0}, angle[2] = {0, 0};
   const float translation[2] = {static_cast<float>(passage.translation.x()),
                                 static_cast<float>(passage.translation.y())};
   f.check(cg_conn_periodic_write(f.fn(), base, zone, connection, centre, angle, translation),
-         "periodic translation");
+          "periodic translation");
   // Units of RotationCenter, RotationAngle, Translation: metre, degree, metre.
   const double exponents[3][5] = {{0, 1, 0, 0, 0}, {0, 0, 0, 0, 1}, {0, 1, 0, 0, 0}};
   for (int k = 0; k < 3; ++k) {
     f.check(cg_goto(f.fn(), base, "Zone_t", zone, "ZoneGridConnectivity_t", 1, "GridConnectivity_t", connection,
-                   "GridConnectivityProperty_t", 1, "Periodic_t", 1, "DataArray_t", k + 1, "end"),
-           "goto periodic data");
+                    "GridConnectivityProperty_t", 1, "Periodic_t", 1, "DataArray_t", k + 1, "end"),
+            "goto periodic data");
     f.check(cg_exponents_write(CGNS_ENUMV(RealDouble), exponents[k]), "periodic exponents");
   }
 }
 
-// The zone, its sections and the periodic connection, written to `file`; errors name
-// `label` (the target of the temporary being written).
-void writeSu2Zone(const UnstructuredPassage& passage, const std::filesystem::path& file,
+// The whole file (base, units, the zone with its sections and the periodic connection)
+// written to `file`; errors name `label` (the target of the temporary being written).
+void writeSu2File(const UnstructuredPassage& passage, const std::filesystem::path& file,
                   const std::string& label) {
   CgnsOutputFile f(file, label);
   int base = 0, zone = 0, coordinate = 0, section = 0;
@@ -76,7 +74,7 @@ void writeSu2Zone(const UnstructuredPassage& passage, const std::filesystem::pat
   f.check(cg_goto(f.fn(), base, "end"), "goto base");
   f.check(cg_dataclass_write(CGNS_ENUMV(Dimensional)), "DataClass");
   f.check(cg_units_write(CGNS_ENUMV(Kilogram), CGNS_ENUMV(Meter), CGNS_ENUMV(Second), CGNS_ENUMV(Kelvin),
-                        CGNS_ENUMV(Degree)), "units");
+                         CGNS_ENUMV(Degree)), "units");
   cgsize_t size[3] = {static_cast<cgsize_t>(passage.points.size()), static_cast<cgsize_t>(passage.cells.size()), 0};
   f.check(cg_zone_write(f.fn(), base, "passage", size, CGNS_ENUMV(Unstructured), &zone), "zone");
   for (int axis = 0; axis < 2; ++axis) {
@@ -85,7 +83,7 @@ void writeSu2Zone(const UnstructuredPassage& passage, const std::filesystem::pat
     const char* name = axis == 0 ? "CoordinateX" : "CoordinateY";
     f.check(cg_coord_write(f.fn(), base, zone, CGNS_ENUMV(RealDouble), name, values.data(), &coordinate), name);
     f.check(cg_goto(f.fn(), base, "Zone_t", zone, "GridCoordinates_t", 1, "DataArray_t", coordinate, "end"),
-           "goto coordinate");
+            "goto coordinate");
     const double lengthExponent[5] = {0, 1, 0, 0, 0};
     f.check(cg_exponents_write(CGNS_ENUMV(RealDouble), lengthExponent), "exponents");
   }
@@ -94,7 +92,7 @@ void writeSu2Zone(const UnstructuredPassage& passage, const std::filesystem::pat
     for (const int p : c) quads.push_back(p + 1);  // CGNS numbers from 1
   cgsize_t last = static_cast<cgsize_t>(passage.cells.size());
   f.check(cg_section_write(f.fn(), base, zone, "cells", CGNS_ENUMV(QUAD_4), 1, last, 0, quads.data(), &section),
-         "section cells");
+          "section cells");
   for (const EdgePatch& p : passage.patches) {
     std::vector<cgsize_t> bars;
     for (const MeshEdge& e : p.edges) {
@@ -104,7 +102,7 @@ void writeSu2Zone(const UnstructuredPassage& passage, const std::filesystem::pat
     const cgsize_t first = last + 1;
     last += static_cast<cgsize_t>(p.edges.size());
     f.check(cg_section_write(f.fn(), base, zone, p.name.c_str(), CGNS_ENUMV(BAR_2), first, last, 0, bars.data(),
-                            &section), "section " + p.name);
+                             &section), "section " + p.name);
   }
   writePeriodicConnection(f, base, zone, passage);
   f.close();
@@ -114,7 +112,7 @@ void writeSu2Zone(const UnstructuredPassage& passage, const std::filesystem::pat
 
 FileWriter su2CgnsFileWriter(const UnstructuredPassage& passage, const std::filesystem::path& file) {
   return {file, [&passage, label = file.string()](const std::filesystem::path& temporary) {
-            writeSu2Zone(passage, temporary, label);
+            writeSu2File(passage, temporary, label);
           }};
 }
 

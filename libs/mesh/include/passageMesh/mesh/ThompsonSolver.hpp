@@ -87,7 +87,8 @@ void thompsonResidualField(const StructuredBlock& oBlock, const GridControl& con
                            std::vector<double>& ry);
 
 // The residual measure of ThompsonReport over the moving rows, for the grid as it is: not a
-// number where any node is (or gives one).
+// number where a node of the moving rows, or a neighbour they read, is not a number (or
+// gives one, as a collapsed node's 0 / 0).
 double thompsonResidual(const StructuredBlock& oBlock, const GridControl& control,
                         const MovingRows& rows);
 

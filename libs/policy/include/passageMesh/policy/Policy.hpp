@@ -26,7 +26,8 @@ namespace passageMesh {
 
 // What policyTrain records beside the weights.
 struct PolicyProvenance {
-  long episodes = 0;              // episodes trained when these weights were taken
+  long episodes = 0;              // episodes of the run that wrote the file (a run started
+                                  // with -actorFrom does not count its start's)
   double validationMeanReward = 0;  // their validation score
   std::string command;            // how they were trained
 };
@@ -60,8 +61,8 @@ class Policy {
                                       const PassageCondition& condition) const;
   const NetworkLayout& layout() const;  // the first member's
   const std::filesystem::path& actorFile() const;  // the first member's weights (.pt)
-  // An ensemble's: the members' episodes summed, its file's <validationMeanReward> and
-  // <command> (0 and empty where it has none).
+  // An ensemble's: the members' episodes summed (their files' counts, not a training
+  // length), its file's <validationMeanReward> and <command> (0 and empty where it has none).
   const PolicyProvenance& provenance() const;
   int memberCount() const;  // 1 for a single actor
 

@@ -1,6 +1,6 @@
 #pragma once
 // The CGNS library's process-wide settings, shared by every reader and writer of CGNS files
-// (libs/structured, libs/meshExport).
+// (libs/structured, libs/meshExport), and the output file every CGNS writer writes through.
 
 #include <filesystem>
 #include <string>
@@ -16,7 +16,9 @@ namespace passageMesh {
 // successful read and write closes them, are unaffected. Only the first call does anything.
 void prepareCgnsLibrary();
 
-// A CGNS file open for writing, closed on every path out. Every failing call throws
+// A CGNS file open for writing, closed on every path out once cg_open has succeeded (a
+// failed open leaves the file to the library; the writers write a temporary that their
+// callers remove). Every failing call throws
 // std::runtime_error "<label>: CGNS <what> failed: <CGNS's message>", the label naming the
 // file the user knows (the target, when the path written is its staged temporary).
 class CgnsOutputFile {
