@@ -27,7 +27,7 @@ void writeFilesAtomically(const std::vector<FileWriter>& files) {
   // at the commit cannot fail for crossing file systems); a failure leaves every target as
   // it was, the temporaries removed.
   StagedOutputs staged;
-  for (const FileWriter& f : files) f.write(staged.stage(f.file, false));
+  for (const FileWriter& f : files) staged.write(f);
   staged.commit();
 }
 
