@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numeric>
+#include <vector>
 
 using namespace passageMesh;
 
@@ -44,4 +46,27 @@ TEST(CubicBSpline, ClampedEndsInterpolateEndValues) {
   const CubicBasis b0 = cubicBasis(8, 0.0), b1 = cubicBasis(8, 1.0);
   EXPECT_DOUBLE_EQ(combine(b0, b0.value, c.data()), 3.0);
   EXPECT_DOUBLE_EQ(combine(b1, b1.value, c.data()), 6.0);
+}
+
+TEST(PiecewiseCubicCurve, AgreesWithTheBasisAndItsDerivativesEverywhere) {
+  // The per-span polynomials must give the spline of the basis recursion: point, first
+  // and second derivative, in every span, at the knots and at the clamped ends.
+  for (int n : {4, 5, 9, 16}) {
+    std::vector<Eigen::Vector2d> control;
+    for (int k = 0; k < n; ++k) control.emplace_back(std::cos(0.7 * k) + 0.1 * k * k, std::sin(1.3 * k) - 0.2 * k);
+    const PiecewiseCubicCurve curve(control.data(), n);
+    for (int m = 0; m <= 200; ++m) {
+      const double u = m / 200.0;
+      const CubicBasis b = cubicBasis(n, u);
+      const Eigen::Vector2d p = combine(b, b.value, control.data()), d1 = combine(b, b.d1, control.data()),
+                            d2 = combine(b, b.d2, control.data());
+      Eigen::Vector2d cp, cd1, cd2;
+      curve.evaluate(u, cp, cd1, cd2);
+      const double scale = 1 + d2.norm();
+      EXPECT_LT((cp - p).norm(), 1e-12) << "n " << n << " u " << u;
+      EXPECT_LT((cd1 - d1).norm(), 1e-10 * scale) << "n " << n << " u " << u;
+      EXPECT_LT((cd2 - d2).norm(), 1e-9 * scale) << "n " << n << " u " << u;
+      EXPECT_EQ(curve.point(u), cp);
+    }
+  }
 }

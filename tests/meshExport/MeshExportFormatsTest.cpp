@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 #include <sstream>
+#include <utility>
 
 #include "../TestFiles.hpp"
 #include "../quality/QualityTestData.hpp"
@@ -231,4 +232,15 @@ TEST(MeshExport, AllFormatsWrittenIntoTheCase) {
   for (const auto& p : written) EXPECT_TRUE(fs::exists(dir / p)) << p;
   for (const char* f : {"points", "faces", "owner", "neighbour", "boundary"})
     EXPECT_TRUE(fs::exists(dir / "constant" / "polyMesh" / f)) << f;
+}
+
+// Whether su2CgnsFileWriter accepts a passage of this kind (an lvalue for a reference type).
+template <typename Passage>
+concept Su2WriterAccepts =
+    requires(Passage&& passage) { su2CgnsFileWriter(std::forward<Passage>(passage), std::filesystem::path{}); };
+
+TEST(Su2Cgns, FileWriterRefusesATemporaryPassage) {
+  // The writer refers to the passage and runs later: a temporary would be gone by then.
+  static_assert(Su2WriterAccepts<const UnstructuredPassage&>);
+  static_assert(!Su2WriterAccepts<UnstructuredPassage>);
 }

@@ -5,10 +5,12 @@
 
 #include <cmath>
 #include <set>
+#include <stdexcept>
 
 #include "QualityTestData.hpp"
 #include "../TestFiles.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
+#include "passageMesh/quality/OBlockNeighbours.hpp"
 #include "passageMesh/structured/CgnsReader.hpp"
 #include "passageMesh/structured/CgnsWriter.hpp"
 
@@ -238,4 +240,44 @@ TEST_F(HohQuality, FoldedCellGivesTheInvalidValue) {
   EXPECT_EQ(q.Q, invalidMeshQuality);
   EXPECT_LT(q.Q, 0);
   EXPECT_NE(q.problem.find("OBlock cell"), std::string::npos) << q.problem;
+}
+
+TEST_F(HohQuality, NeighboursReadFromTheConnections) {
+  OBlockNeighbours n;
+  findOBlockNeighbours(hoh.mesh, n);
+  EXPECT_EQ(n.oBlock, oBlock);
+  EXPECT_TRUE(n.wrapI);
+  const StructuredBlock& o = hoh.mesh.blocks[oBlock];
+  ASSERT_EQ(n.outer.size(), static_cast<std::size_t>(o.ni));
+  const int J = o.nj - 1;
+  // Across the periodic segments: the node one row inside the opposite segment, moved
+  // by the translation into this side's frame.
+  const BlockConnection& periodic = connectionNamed(hoh.mesh, "oBlockPeriodic");
+  const int k = 3;
+  const int iLower = rangeNode(periodic.a, k)[0], iUpper = rangeNode(periodic.b, k)[0];
+  const OuterNeighbour& lower = n.outer[static_cast<std::size_t>(iLower)];
+  EXPECT_EQ(lower.block, oBlock);
+  EXPECT_EQ(lower.node, iUpper + o.ni * (J - 1));
+  EXPECT_EQ(Eigen::Vector2d(lower.dx, lower.dy), -periodic.translation);
+  const OuterNeighbour& upper = n.outer[static_cast<std::size_t>(iUpper)];
+  EXPECT_EQ(upper.node, iLower + o.ni * (J - 1));
+  EXPECT_EQ(Eigen::Vector2d(upper.dx, upper.dy), periodic.translation);
+  // Across an interface: the H-block's node one step into it, untranslated.
+  const BlockConnection& inlet = connectionNamed(hoh.mesh, "inletInterface");
+  const auto h = rangeNode(inlet.a, 2);
+  const OuterNeighbour& interface = n.outer[static_cast<std::size_t>(rangeNode(inlet.b, 2)[0])];
+  EXPECT_EQ(interface.block, inlet.a.block);
+  EXPECT_EQ(interface.node, h[0] - 1 + hoh.mesh.blocks[inlet.a.block].ni * h[1]);
+  EXPECT_EQ(interface.dx, 0.0);
+  EXPECT_EQ(interface.dy, 0.0);
+  // A corner (joined to two faces) has none.
+  EXPECT_EQ(n.outer[static_cast<std::size_t>(inlet.b.begin[0])].block, -1);
+}
+
+TEST_F(HohQuality, NeighboursRefuseConnectedRangesOfDifferentLengths) {
+  StructuredMesh mesh = hoh.mesh;
+  for (BlockConnection& c : mesh.connections)
+    if (c.name == "oBlockPeriodic") c.b.end[0] += c.b.end[0] > c.b.begin[0] ? -1 : 1;  // one node short
+  OBlockNeighbours n;
+  EXPECT_THROW(findOBlockNeighbours(mesh, n), std::invalid_argument);
 }

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "passageMesh/structured/CgnsWriter.hpp"
 
@@ -368,4 +369,14 @@ TEST(CgnsWriter, FailedWriteKeepsThePreviousFileAndNamesTheFile) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(impossible.string()), std::string::npos) << e.what();
   }
+}
+
+// Whether cgnsFileWriter accepts a mesh of this kind (an lvalue for a reference type).
+template <typename Mesh>
+concept WriterAccepts = requires(Mesh&& mesh) { cgnsFileWriter(std::forward<Mesh>(mesh), std::filesystem::path{}); };
+
+TEST(CgnsWriter, FileWriterRefusesATemporaryMesh) {
+  // The writer refers to the mesh and runs later: a temporary would be gone by then.
+  static_assert(WriterAccepts<const StructuredMesh&>);
+  static_assert(!WriterAccepts<StructuredMesh>);
 }

@@ -4,6 +4,7 @@
 #include <dlfcn.h>
 
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace passageMesh {
@@ -25,7 +26,14 @@ void prepareCgnsLibrary() {
 CgnsOutputFile::CgnsOutputFile(const std::filesystem::path& path, std::string label)
     : label_(std::move(label)) {
   prepareCgnsLibrary();
-  check(cg_open(path.c_str(), CG_MODE_WRITE, &fn_), "open");
+  const int status = cg_open(path.c_str(), CG_MODE_WRITE, &fn_);
+  if (status == CG_OK) return;
+  // A failed open may still have taken a file index, and no destructor runs after a
+  // constructor throws: the message is read before the close can replace it.
+  const std::string error = label_ + ": CGNS open failed: " + cg_get_error();
+  if (fn_ >= 0) cg_close(fn_);
+  fn_ = -1;
+  throw std::runtime_error(error);
 }
 
 CgnsOutputFile::~CgnsOutputFile() {
