@@ -164,6 +164,24 @@ TEST(HohMesh, SaysWhenAPeriodicBoundaryCutsTheBlade) {
   midway.alphaCamber = 1;
   const HohMesh ok = buildHohMesh(blade, c, midway);
   EXPECT_EQ(ok.problem.find("cuts the blade"), std::string::npos) << ok.problem;
+  // The parameters are to blame here, not the pitch.
+  EXPECT_EQ(ok.problem.find("overlaps its periodic neighbour"), std::string::npos) << ok.problem;
+}
+
+// At a pitch below the blade's extent in y every periodic boundary cuts it: the problem
+// says that the cascade cannot exist instead of pointing at the meshing parameters.
+TEST(HohMesh, SaysWhenTheBladeOverlapsItsPeriodicNeighbour) {
+  const BladeShape blade(testData::typicalTurbineBlade());
+  const double C = blade.parameters().chord;
+  PassageCondition c = paperCondition(C);
+  c.pitch = 0.95 * widestYExtent(blade).extent;
+  const HohMesh hoh = buildHohMesh(blade, c, MeshingParameters::defaults(C));
+  EXPECT_FALSE(hoh.valid);
+  EXPECT_NE(hoh.problem.find("periodic boundary cuts the blade at x = "), std::string::npos) << hoh.problem;
+  EXPECT_NE(hoh.problem.find("overlaps its periodic neighbour, and no meshing parameters give a passage"),
+            std::string::npos)
+      << hoh.problem;
+  EXPECT_EQ(hoh.problem.find("yIn, yOut or alphaCamber"), std::string::npos) << hoh.problem;
 }
 
 // An interface at the edge itself (xOut = 0, or betaIn xIn = 0) cuts the rounded edge:

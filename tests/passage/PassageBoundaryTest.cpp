@@ -202,3 +202,47 @@ TEST(PassageBoundary, ClearanceIsTheRoomBetweenBladeAndOuterLoop) {
   m.yOut = 0.6 * c.pitch;
   EXPECT_LT(bladeClearance(blade, PassageBoundary(blade, c, m)), 0.0);
 }
+
+TEST(PassageBoundary, WidestYExtentIsThePitchBelowWhichNoBoundaryClearsTheBlade) {
+  const BladeShape blade(testData::typicalTurbineBlade());
+  const double C = blade.parameters().chord;
+  const BladeYExtent widest = widestYExtent(blade);
+  // Checked against a profile sampled ten times as densely, at the same x.
+  const auto dense = blade.sampleLoop(20000);
+  double low = 1e9, high = -1e9;
+  for (std::size_t k = 0; k < dense.size(); ++k) {
+    const Eigen::Vector2d& a = dense[k];
+    const Eigen::Vector2d& b = dense[(k + 1) % dense.size()];
+    if ((a.x() - widest.x) * (b.x() - widest.x) > 0 || a.x() == b.x()) continue;
+    const double y = a.y() + (widest.x - a.x()) / (b.x() - a.x()) * (b.y() - a.y());
+    low = std::min(low, y);
+    high = std::max(high, y);
+  }
+  EXPECT_NEAR(widest.extent, high - low, 1e-6 * C);
+  EXPECT_GT(widest.extent, 0.1 * C);  // a staggered, cambered blade: wider in y than thick
+  // Moving the blade does not change it; scaling it scales it.
+  BladeParameters moved = blade.parameters();
+  moved.xLe += 0.3;
+  moved.yLe -= 0.7;
+  EXPECT_NEAR(widestYExtent(BladeShape(moved)).extent, widest.extent, 1e-9 * C);
+  EXPECT_NEAR(widestYExtent(BladeShape(moved)).x, widest.x + 0.3, 1e-9 * C);
+  auto bestClearance = [&](double pitch) {
+    PassageCondition c = condition(C);
+    c.pitch = pitch;
+    double best = -1e9;
+    for (int yIn = -5; yIn <= 5; ++yIn)
+      for (int yOut = -5; yOut <= 5; ++yOut)
+        for (int alpha = 0; alpha <= 4; ++alpha) {
+          MeshingParameters m;
+          m.yIn = 0.1 * yIn * C;
+          m.yOut = 0.1 * yOut * C;
+          m.alphaCamber = 0.25 * alpha;
+          best = std::max(best, bladeClearance(blade, PassageBoundary(blade, c, m)));
+        }
+    return best;
+  };
+  // Just below it no boundary in the parameter box (yIn, yOut, alphaCamber) clears the
+  // blade; well above it one does.
+  EXPECT_LT(bestClearance(0.99 * widest.extent), 0.0);
+  EXPECT_GT(bestClearance(1.5 * widest.extent), 0.0);
+}

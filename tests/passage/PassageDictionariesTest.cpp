@@ -1,12 +1,16 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 #include <utility>
 
 #include "../TestFiles.hpp"
+#include "../blade/BladeTestData.hpp"
 
 #include "passageMesh/core/InputError.hpp"
 #include "passageMesh/passage/MeshingParameters.hpp"
+#include "passageMesh/passage/PassageBoundary.hpp"
 #include "passageMesh/passage/PassageCondition.hpp"
 
 using namespace passageMesh;
@@ -107,4 +111,28 @@ TEST(MeshDict, WritesAndReadsBack) {
   const auto file = writeTemp("w.xml", "");
   writeMeshDict(file, p);
   EXPECT_EQ(readMeshDict(file, 0.1).toArray(), p.toArray());
+}
+
+TEST(PassageDict, RefusesAPitchAtWhichTheBladeOverlapsItsNeighbour) {
+  const BladeShape blade(testData::typicalTurbineBlade());
+  const double extent = widestYExtent(blade).extent;
+  auto dict = [](double pitch) {
+    std::ostringstream text;
+    text << std::setprecision(17) << pitch;
+    return "<passageDict>\n<xIn>0.5c</xIn>\n<pitch>" + text.str() +
+           "</pitch>\n<xOut>0.5c</xOut>\n<nO>30000</nO>\n<firstCellHeight>1e-5</firstCellHeight>\n</passageDict>";
+  };
+  const auto tight = writeTemp("overlap.xml", dict(0.98 * extent));
+  try {
+    readPassageDict(tight, blade);
+    ADD_FAILURE() << "no exception";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(tight.string() + ":3:"), std::string::npos) << what;  // the file and the pitch's line
+    EXPECT_NE(what.find("overlaps its periodic neighbour"), std::string::npos) << what;
+  }
+  // The chord-only reader has no blade to check against.
+  EXPECT_NO_THROW(readPassageDict(tight, blade.parameters().chord));
+  // A pitch above the extent passes.
+  EXPECT_EQ(readPassageDict(writeTemp("clear.xml", dict(1.02 * extent)), blade).pitch, 1.02 * extent);
 }

@@ -287,17 +287,32 @@ TEST(PolicyMeshCommand, FallsBackOnAMembersOwnActionWhereTheShippedEnsemblesMean
   EXPECT_TRUE(fs::exists(shipped / "mesh" / "passage.cgns"));
 }
 
-// Validation passage 11: the shipped ensemble's mean action and each member's own fold it
-// (docs/policy/thirtyFifthSession-shipped-validation-passages.csv). An invalid mesh is an
-// error on one line, and the case is left as it was: no meshDict.xml without its mesh.
+// Validation passage 168 (pitch 0.99 chord, the outlet 0.003 chord behind the trailing
+// edge): the shipped ensemble's mean action and each member's own fold it, as do the
+// parameter moves. An invalid mesh is an error on one line, and the case is left as it
+// was: no meshDict.xml without its mesh.
 TEST(PolicyMeshCommand, AnInvalidMeshIsAnErrorAndWritesNothing) {
-  const fs::path dir = validationPassageCase("policyMeshInvalid", 11);
+  const fs::path dir = validationPassageCase("policyMeshInvalid", 168);
   const RunResult r = runTool(policyMesh, dir);
-  ASSERT_NE(r.exitCode, 0) << "the shipped policy meshes validation passage 11: choose a passage where "
+  ASSERT_NE(r.exitCode, 0) << "the shipped policy meshes validation passage 168: choose a passage where "
                               "it does not for this test\n" << r.out;
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("policyMesh: error: the mesh is invalid"), std::string::npos) << r.err;
   EXPECT_NE(r.out.find("    nT "), std::string::npos) << r.out;  // the parameters are printed
+  EXPECT_FALSE(fs::exists(dir / "system" / "meshDict.xml"));
+  EXPECT_FALSE(fs::exists(dir / "mesh"));
+}
+
+// Validation passage 11: its blade is wider in y (1.04 pitches) than the pitch, so it
+// would overlap its periodic neighbour. Reading the case says so, naming the file and the
+// pitch's line; nothing is meshed or written.
+TEST(PolicyMeshCommand, APitchAtWhichTheBladeOverlapsItsNeighbourIsRefused) {
+  const fs::path dir = validationPassageCase("policyMeshOverlap", 11);
+  const RunResult r = runTool(policyMesh, dir);
+  EXPECT_EQ(r.exitCode, 1) << r.out;
+  EXPECT_NE(r.err.find((dir / "system" / "passageDict.xml").string() + ":"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("<pitch>"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the blade overlaps its periodic neighbour: no passage exists"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "system" / "meshDict.xml"));
   EXPECT_FALSE(fs::exists(dir / "mesh"));
 }

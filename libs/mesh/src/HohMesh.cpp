@@ -145,9 +145,16 @@ std::string outerLoopCrossing(const BladeShape& blade, const PassageBoundary& bo
     const bool below = y <= boundary.lowerY(x), above = y >= boundary.upperY(x);
     if (below || above) {
       periodicCut = true;
-      return std::string("the ") + (below ? "lower" : "upper") +
-             " periodic boundary cuts the blade at x = " + metres(x) +
-             " (yIn, yOut or alphaCamber too far from the camber line for this pitch)";
+      // Where the blade is wider in y than the pitch no parameters can help: say so
+      // rather than point at yIn, yOut and alphaCamber.
+      const BladeYExtent widest = widestYExtent(blade);
+      const std::string why =
+          widest.extent >= boundary.pitch()
+              ? "the blade's extent in y, " + metres(widest.extent) + " at x = " + metres(widest.x) +
+                    ", is at least the pitch: it overlaps its periodic neighbour, and no meshing parameters give a passage"
+              : "yIn, yOut or alphaCamber too far from the camber line for this pitch";
+      return std::string("the ") + (below ? "lower" : "upper") + " periodic boundary cuts the blade at x = " +
+             metres(x) + " (" + why + ")";
     }
   }
   // The interfaces against the profile itself (800 points), not the wall nodes: with few

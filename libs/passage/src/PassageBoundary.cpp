@@ -105,4 +105,27 @@ double bladeClearance(const BladeShape& blade, const PassageBoundary& boundary) 
   return clearance;
 }
 
+BladeYExtent widestYExtent(const BladeShape& blade) {
+  const std::vector<Eigen::Vector2d> loop = blade.sampleLoop(2000);
+  const std::size_t n = loop.size();
+  BladeYExtent widest;
+  for (std::size_t s = 0; s < n; s += 4) {
+    const double x = loop[s].x();
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (std::size_t k = 0; k < n; ++k) {
+      const Eigen::Vector2d& a = loop[k];
+      const Eigen::Vector2d& b = loop[(k + 1) % n];
+      if (std::min(a.x(), b.x()) > x || std::max(a.x(), b.x()) < x) continue;
+      // Where the segment a-b crosses the vertical through x (a vertical segment: both ends).
+      const double t = a.x() == b.x() ? 0.0 : (x - a.x()) / (b.x() - a.x());
+      for (const double y : {a.y() + t * (b.y() - a.y()), a.x() == b.x() ? b.y() : a.y() + t * (b.y() - a.y())}) {
+        low = std::min(low, y);
+        high = std::max(high, y);
+      }
+    }
+    if (high - low > widest.extent) widest = {high - low, x};
+  }
+  return widest;
+}
+
 }  // namespace passageMesh

@@ -5,11 +5,16 @@
 
 #include "passageMesh/core/Dictionary.hpp"
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/passage/PassageBoundary.hpp"
 
 namespace passageMesh {
 
-PassageCondition readPassageDict(const std::filesystem::path& file, double chord,
-                                 std::vector<std::string>* warnings) {
+namespace {
+
+// readPassageDict, with the pitch also refused at or below `blade`'s widest extent in y
+// when a blade is given.
+PassageCondition readCondition(const std::filesystem::path& file, double chord, const BladeShape* blade,
+                               std::vector<std::string>* warnings) {
   const std::vector<std::string> keys{"pitch", "xIn", "xOut", "nO", "firstCellHeight"};
   const Dictionary dict = Dictionary::read(file, "passageDict", keys);
   dict.require(keys);
@@ -30,6 +35,15 @@ PassageCondition readPassageDict(const std::filesystem::path& file, double chord
   if (nO < 100 || nO > 10000000) refuse("nO", "an integer from 100 to 10000000");
   if (c.firstCellHeight <= 0) refuse("firstCellHeight", "a positive length");
   c.nO = static_cast<int>(nO);
+  if (blade) {
+    const BladeYExtent widest = widestYExtent(*blade);
+    if (c.pitch <= widest.extent) {
+      std::ostringstream expected;
+      expected << std::setprecision(6) << "a pitch above " << widest.extent << " m, the blade's extent in y at x = "
+               << widest.x << " m (at this pitch the blade overlaps its periodic neighbour: no passage exists)";
+      refuse("pitch", expected.str());
+    }
+  }
 
   // A length is compared in chords; the warning says the value in chords too, since the
   // dictionary may give it in metres ("0.1" for STD10's pitch is 1.008c).
@@ -50,6 +64,18 @@ PassageCondition readPassageDict(const std::filesystem::path& file, double chord
   outside("firstCellHeight", c.firstCellHeight / chord, R::firstCellHeightMin,
           R::firstCellHeightMax, "2e-5c..2e-4c", true);
   return c;
+}
+
+}  // namespace
+
+PassageCondition readPassageDict(const std::filesystem::path& file, double chord,
+                                 std::vector<std::string>* warnings) {
+  return readCondition(file, chord, nullptr, warnings);
+}
+
+PassageCondition readPassageDict(const std::filesystem::path& file, const BladeShape& blade,
+                                 std::vector<std::string>* warnings) {
+  return readCondition(file, blade.parameters().chord, &blade, warnings);
 }
 
 }  // namespace passageMesh

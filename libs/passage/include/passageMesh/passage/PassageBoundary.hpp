@@ -75,4 +75,17 @@ class PassageBoundary {
 // distance between neighbouring loop samples.
 double bladeClearance(const BladeShape& blade, const PassageBoundary& boundary);
 
+// The widest extent in y of the blade at one x, and that x [m]. The periodic boundaries
+// are curves y(x) a pitch apart with the blade between them, so a passage exists only
+// where the pitch exceeds this; at a pitch at or below it the blade overlaps its periodic
+// neighbour (a cascade that cannot exist), and no choice of meshing parameters helps.
+// From the profile sampled at 2000 points, cut at the x of every fourth sample (about
+// 2 ms): the result may fall short of the true widest extent, never exceed it by more
+// than the polygon's sagitta (about 1e-7 chord), so a pitch it refuses is too small.
+struct BladeYExtent {
+  double extent = 0;  // [m]
+  double x = 0;       // [m]
+};
+BladeYExtent widestYExtent(const BladeShape& blade);
+
 }  // namespace passageMesh

@@ -7,6 +7,8 @@
 
 namespace passageMesh {
 
+class BladeShape;
+
 struct PassageCondition {
   double pitch = 0;            // blade spacing
   double xIn = 0;              // inlet distance upstream of the leading edge
@@ -31,6 +33,11 @@ struct PassageConditionRange {
 // pitch 0.3..1 C, xIn and xOut 0..1 C, nO 10000..50000, firstCellHeight 2e-5..2e-4 C)
 // are used but reported in `warnings`: the policy was not trained there.
 PassageCondition readPassageDict(const std::filesystem::path& file, double chord,
+                                 std::vector<std::string>* warnings = nullptr);
+// As above for `blade` (its chord), and a pitch at or below the blade's widest extent in y
+// (widestYExtent, PassageBoundary.hpp) is an InputError too: at that pitch the blade would
+// overlap its periodic neighbour, so no passage exists.
+PassageCondition readPassageDict(const std::filesystem::path& file, const BladeShape& blade,
                                  std::vector<std::string>* warnings = nullptr);
 
 }  // namespace passageMesh
