@@ -70,28 +70,20 @@ GnuplotRun::GnuplotRun(std::string program) : program_(std::move(program)) {
 
 GnuplotRun::~GnuplotRun() {
   std::error_code ignored;
-  for (const auto& target : targets_) fs::remove(temporaryFor(target), ignored);
-  fs::remove_all(folder_, ignored);
-}
-
-fs::path GnuplotRun::temporaryFor(const fs::path& png) const {
-  // Beside the target (same file system: the rename is atomic); the folder's unique name
-  // keeps two runs at once apart.
-  return png.string() + "." + folder_.filename().string() + ".tmp";
+  fs::remove_all(folder_, ignored);  // pictures_ removes the pictures not moved into place
 }
 
 std::string GnuplotRun::output(const fs::path& png) {
-  std::error_code ignored;
-  if (png.has_parent_path()) fs::create_directories(png.parent_path(), ignored);
+  const fs::path temporary = pictures_.stage(png, false);
   // A folder that cannot take the picture is said here, with the reason; gnuplot's own
   // message would only quote its `set output` line.
-  const fs::path probe = temporaryFor(png);
   errno = 0;
-  if (!std::ofstream(probe))
+  if (!std::ofstream(temporary))
     throw std::runtime_error(png.string() + ": cannot write file (" + fileErrorReason("cannot create it") + ")");
-  fs::remove(probe, ignored);
-  targets_.push_back(png);
-  return "set output " + gnuplotQuoted(temporaryFor(png).string()) + "\n";
+  std::error_code ignored;
+  fs::remove(temporary, ignored);
+  drawing_.push_back(temporary);
+  return "set output " + gnuplotQuoted(temporary.string()) + "\n";
 }
 
 std::string GnuplotRun::dataFile(const std::string& content) {
@@ -107,17 +99,13 @@ void GnuplotRun::run(const std::string& script) {
   const int status = std::system((shellQuoted(program_) + " " + shellQuoted(scriptFile.string()) +
                                   " 2>" + shellQuoted(errors.string())).c_str());
   bool drawn = status == 0;
-  for (const auto& target : targets_) drawn = drawn && fs::is_regular_file(temporaryFor(target));
+  for (const auto& picture : drawing_) drawn = drawn && fs::is_regular_file(picture);
   if (!drawn) {
     const std::string why = firstLine(errors);
     throw std::runtime_error("gnuplot failed" + (why.empty() ? std::string() : " (" + why + ")"));
   }
-  for (const auto& target : targets_) {
-    std::error_code ec;
-    fs::rename(temporaryFor(target), target, ec);
-    if (ec) throw std::runtime_error(target.string() + ": cannot replace file (" + ec.message() + ")");
-  }
-  targets_.clear();
+  pictures_.commit();
+  drawing_.clear();
 }
 
 }  // namespace passageMesh

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "passageMesh/core/StagedOutputs.hpp"
+
 namespace passageMesh {
 
 // A path as a single-quoted gnuplot string (a quote is written twice).
@@ -42,9 +44,9 @@ class GnuplotRun {
  private:
   std::string program_;
   std::filesystem::path folder_;
-  std::vector<std::filesystem::path> targets_;
+  StagedOutputs pictures_;  // each picture's temporary beside it, moved into place by run()
+  std::vector<std::filesystem::path> drawing_;  // those temporaries, which gnuplot must write
   int dataFiles_ = 0;
-  std::filesystem::path temporaryFor(const std::filesystem::path& png) const;
 };
 
 }  // namespace passageMesh
