@@ -303,9 +303,13 @@ class PolishProblem {
   void addSecondDifference(const NodeRef& a, const NodeRef& b, const NodeRef& c) {
     auto* f = new SecondDifference;
     f->weight = options_.smoothWeight;
-    f->x0 = a.xy[0] - 2 * b.xy[0] + c.xy[0];
-    f->y0 = a.xy[1] - 2 * b.xy[1] + c.xy[1];
-    f->spacing = 0.5 * (std::hypot(a.xy[0] - b.xy[0], a.xy[1] - b.xy[1]) + std::hypot(c.xy[0] - b.xy[0], c.xy[1] - b.xy[1]));
+    // Where the nodes stand now (a periodic image moved by its translation).
+    const Eigen::Vector2d pa(a.xy[0] + a.dx, a.xy[1] + a.dy), pb(b.xy[0] + b.dx, b.xy[1] + b.dy),
+        pc(c.xy[0] + c.dx, c.xy[1] + c.dy);
+    const Eigen::Vector2d d2 = pa - 2 * pb + pc;
+    f->x0 = d2.x();
+    f->y0 = d2.y();
+    f->spacing = 0.5 * ((pa - pb).norm() + (pc - pb).norm());
     add(f, {{a, b, c}}, 2);
   }
 
@@ -333,13 +337,26 @@ class PolishProblem {
         addJacobianRatio(i, j, i + 1, j, false);
         if (j < top_) addJacobianRatio(i, j, i, j + 1, true);
       }
-    if (options_.smoothWeight > 0)
+    if (options_.smoothWeight > 0) {
       for (int j = 1; j < top_; ++j)
         for (int i = 0; i < n_; ++i) {
           if (!mayReach(i, j)) continue;
           addSecondDifference({node(i - 1, j)}, {node(i, j)}, {node(i + 1, j)});
           addSecondDifference({node(i, j - 1)}, {node(i, j)}, {node(i, j + 1)});
         }
+      // Each line continued across the outer row into its neighbour beyond (the periodic
+      // image of the partner's line, or the H-block's line): without it the polish bends
+      // the lines where they cross the periodic cut and the interfaces, which Q does not
+      // see and a flow solver does (T106A in simpleFoam: docs/elliptic-smoothing.md
+      // "Polish").
+      for (int i = 0; i < n_; ++i) {
+        const OuterNeighbour& g = nb_.outer[static_cast<std::size_t>(i)];
+        if (g.block < 0) continue;
+        const NodeRef beyond = g.block == nb_.oBlock ? NodeRef{node(g.node % o_.ni, g.node / o_.ni), g.dx, g.dy}
+                                                     : NodeRef{ghostOf_[static_cast<std::size_t>(i)]};
+        addSecondDifference({node(i, top_ - 1)}, {node(i, top_)}, beyond);
+      }
+    }
     for (int i = 0; i < n_; ++i)
       for (int j = 0; j <= top_; ++j)
         if (held(node(i, j)) && problem_.HasParameterBlock(node(i, j))) problem_.SetParameterBlockConstant(node(i, j));

@@ -14,7 +14,9 @@
 // pass's start (the wall clustering stays). D2 P is a node's second difference along a row or a
 // line, D2 P0 the one the pass starts from, h the spacing there: the angles and the central-difference
 // Jacobians do not see a zig-zag of alternate rows or a crease of the lines, this term
-// does. Minimising a smooth surrogate of the quality, rather than Q itself (minima and
+// does. It includes each line's outer node, whose neighbour beyond is the periodic image of
+// the partner line's node or the H-block's node: so the lines stay continued across the
+// periodic cut and the interfaces, which Q does not see and a flow solver does. Minimising a smooth surrogate of the quality, rather than Q itself (minima and
 // maxima, not differentiable), is optimisation-based mesh smoothing as in Knupp,
 // "Achieving finite element mesh quality via optimization of the Jacobian matrix norm and
 // associated quantities", Int. J. Numer. Meth. Eng. 48, 2000. The elliptic solve fixes
