@@ -2,14 +2,18 @@
 // across the periodic segments, the O/H interfaces, the seam, the blade and the
 // interface corners, and the invalid-mesh value.
 #include <gtest/gtest.h>
+#include <tinyxml2.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <set>
 #include <stdexcept>
 
 #include "QualityTestData.hpp"
 #include "../TestFiles.hpp"
+#include "passageMesh/core/InputError.hpp"
 #include "passageMesh/quality/MeshQuality.hpp"
+#include "passageMesh/quality/MeshQualityReport.hpp"
 #include "passageMesh/quality/OBlockNeighbours.hpp"
 #include "passageMesh/structured/CgnsReader.hpp"
 #include "passageMesh/structured/CgnsWriter.hpp"
@@ -280,4 +284,40 @@ TEST_F(HohQuality, NeighboursRefuseConnectedRangesOfDifferentLengths) {
     if (c.name == "oBlockPeriodic") c.b.end[0] += c.b.end[0] > c.b.begin[0] ? -1 : 1;  // one node short
   OBlockNeighbours n;
   EXPECT_THROW(findOBlockNeighbours(mesh, n), std::invalid_argument);
+}
+
+TEST_F(HohQuality, XmlReportHoldsEveryValueExactlyAndNamesTheBlocks) {
+  const std::string xml = formatMeshQualityXml(hoh.mesh, base, "mesh/passage.cgns");
+  tinyxml2::XMLDocument doc;
+  ASSERT_EQ(doc.Parse(xml.c_str()), tinyxml2::XML_SUCCESS) << xml;
+  const tinyxml2::XMLElement* root = doc.FirstChildElement("meshQuality");
+  ASSERT_NE(root, nullptr);
+  EXPECT_STREQ(root->Attribute("source"), "mesh/passage.cgns");
+  EXPECT_STREQ(root->Attribute("valid"), "true");
+  auto value = [](const tinyxml2::XMLElement* e, const char* name) {
+    return std::strtod(e->FirstChildElement(name)->GetText(), nullptr);
+  };
+  EXPECT_EQ(value(root, "Q"), base.Q);  // 17 digits: the same double
+  EXPECT_EQ(value(root, "QJmin"), base.QJmin);
+  EXPECT_EQ(value(root, "QSavg"), base.QSavg);
+  const tinyxml2::XMLElement* worst = root->FirstChildElement("worstQS");
+  ASSERT_NE(worst, nullptr);
+  EXPECT_STREQ(worst->Attribute("block"), "OBlock");
+  EXPECT_EQ(worst->IntAttribute("i"), base.worstQS.i);
+  EXPECT_EQ(worst->IntAttribute("j"), base.worstQS.j);
+  int blocks = 0;
+  for (const tinyxml2::XMLElement* b = root->FirstChildElement("blocks")->FirstChildElement("block"); b;
+       b = b->NextSiblingElement("block"), ++blocks)
+    EXPECT_STREQ(b->Attribute("name"), hoh.mesh.blocks[static_cast<std::size_t>(blocks)].name.c_str());
+  EXPECT_EQ(blocks, static_cast<int>(hoh.mesh.blocks.size()));
+}
+
+TEST(MeshQualityReport, AFileThatIsNotCgnsIsAnInputErrorNamingIt) {
+  const auto file = testData::writeTempFile("qualityReport", "notCgns.cgns", "not a CGNS file\n");
+  try {
+    readMeshWithQuality(file);
+    ADD_FAILURE() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+  }
 }

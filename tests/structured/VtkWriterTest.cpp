@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 
@@ -145,4 +147,21 @@ TEST(VtkWriter, RejectsBadInputAndWritesNothing) {
   StructuredMesh duplicate = twoBlocks();
   duplicate.blocks[1].name = "HInlet";
   expectRejected(duplicate, {}, "duplicate block name");
+}
+
+TEST(VtkWriter, FileContentsAreWhatWriteVtmWritesWithTheVtmLast) {
+  const auto dir = freshDir("contents");
+  const StructuredMesh mesh = twoBlocks();
+  const std::vector<BlockField> fields{qualityField(mesh)};
+  writeVtm(mesh, dir / "mesh.vtm", fields);
+  const auto contents = vtmFileContents(mesh, dir / "mesh.vtm", fields);
+  ASSERT_EQ(contents.size(), mesh.blocks.size() + 1);  // one .vts per block, then the .vtm
+  EXPECT_EQ(contents.back().first, dir / "mesh.vtm");
+  for (const auto& [file, content] : contents) {
+    std::ifstream in(file, std::ios::binary);
+    ASSERT_TRUE(in) << file;
+    const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(written, content) << file;
+  }
+  for (std::size_t k = 0; k + 1 < contents.size(); ++k) EXPECT_EQ(contents[k].first.extension(), ".vts");
 }
