@@ -26,8 +26,9 @@ std::vector<Eigen::Vector2d> orderedLoop(const BladeParameters& blade, int count
 }  // namespace
 
 TEST(BladeFitGuess, PlacesSampledBladesNearTheirTrueEdgesChordAndStagger) {
-  // The guess takes the points furthest apart as the edges, so on round edges (radiusLe
-  // up to 0.3 in the sampler's box) its chord and edges are off by up to a tenth of the
+  // The guess starts from the points furthest apart and moves the edges to where the
+  // profile is perpendicular to its estimated camber angles; on round edges (radiusLe up
+  // to 0.32 in the sampler's box) its chord and edges are still off by up to a tenth of the
   // chord, which the search corrects; a grossly wrong start (edges swapped, a side lost)
   // would be off by far more.
   BladeSampler sampler(BladeParameterRange::readDefault(), 20261208);

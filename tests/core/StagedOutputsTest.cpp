@@ -95,3 +95,20 @@ TEST(AtomicFile, AGroupOfFileWritersIsWrittenWholeOrNotAtAll) {
   EXPECT_EQ(fileText(dir / "a.txt"), "new a");
   EXPECT_EQ(fileText(dir / "sub" / "b.txt"), "b");
 }
+
+TEST(StagedOutputs, OneTargetIsStagedOnceAndTwoStagingsNeverShareATemporary) {
+  const fs::path dir = tempFolder("stagedTwice");
+  fs::remove_all(dir);
+  StagedOutputs first, second;
+  const fs::path a = first.stage(dir / "out.txt", false);
+  EXPECT_THROW(first.stage(dir / "out.txt", false), std::runtime_error);
+  const fs::path b = second.stage(dir / "out.txt", false);
+  EXPECT_NE(a, b);
+  std::ofstream(a) << "first";
+  std::ofstream(b) << "second";
+  first.commit();
+  second.commit();
+  std::ifstream in(dir / "out.txt");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()), "second");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}

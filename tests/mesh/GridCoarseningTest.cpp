@@ -69,5 +69,17 @@ TEST(GridCoarsening, InterpolatedDisplacementIsBilinearInTheFineIndices) {
           EXPECT_NEAR(dy[k], affineY(i, j), 1e-14) << i << " " << j;
         }
       }
+    // A displacement that depends on the row alone is continuous across the seam: exact at
+    // every node, the last intervals of the loop (an odd loop's single one) included.
+    after = before;
+    for (int J = 0; J < after.nj; ++J)
+      for (int I = 0; I < after.ni; ++I) after.yAt(I, J) += affineY(0, c.fineRowOf[static_cast<std::size_t>(J)]);
+    interpolateDisplacement(before, after, c, fine, rows, dx, dy);
+    for (int j = rows.first(); j <= rows.last(fine); ++j)
+      for (int i = 0; i < fine.ni; ++i) {
+        const auto k = static_cast<std::size_t>(i + fine.ni * j);
+        EXPECT_EQ(dx[k], 0.0) << i << " " << j;
+        EXPECT_NEAR(dy[k], affineY(0, j), 1e-14) << i << " " << j;
+      }
   }
 }

@@ -243,4 +243,5 @@ TEST(Su2Cgns, FileWriterRefusesATemporaryPassage) {
   // The writer refers to the passage and runs later: a temporary would be gone by then.
   static_assert(Su2WriterAccepts<const UnstructuredPassage&>);
   static_assert(!Su2WriterAccepts<UnstructuredPassage>);
+  static_assert(!Su2WriterAccepts<const UnstructuredPassage>);
 }

@@ -226,6 +226,11 @@ TEST(PassageBoundary, WidestYExtentIsThePitchBelowWhichNoBoundaryClearsTheBlade)
   moved.yLe -= 0.7;
   EXPECT_NEAR(widestYExtent(BladeShape(moved)).extent, widest.extent, 1e-9 * C);
   EXPECT_NEAR(widestYExtent(BladeShape(moved)).x, widest.x + 0.3, 1e-9 * C);
+  BladeParameters scaled = blade.parameters();
+  scaled.chord *= 2;
+  scaled.xLe *= 2;
+  scaled.yLe *= 2;
+  EXPECT_NEAR(widestYExtent(BladeShape(scaled)).extent, 2 * widest.extent, 1e-9 * C);
   auto bestClearance = [&](double pitch) {
     PassageCondition c = condition(C);
     c.pitch = pitch;

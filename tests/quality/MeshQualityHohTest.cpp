@@ -295,8 +295,10 @@ TEST_F(HohQuality, XmlReportNamesItsSourceAndEveryBlock) {
   const tinyxml2::XMLElement* root = doc.FirstChildElement("meshQuality");
   ASSERT_NE(root, nullptr);
   EXPECT_STREQ(root->Attribute("source"), "mesh/passage.cgns");
+  const tinyxml2::XMLElement* list = root->FirstChildElement("blocks");
+  ASSERT_NE(list, nullptr) << xml;
   int blocks = 0;
-  for (const tinyxml2::XMLElement* b = root->FirstChildElement("blocks")->FirstChildElement("block"); b;
+  for (const tinyxml2::XMLElement* b = list->FirstChildElement("block"); b;
        b = b->NextSiblingElement("block"), ++blocks) {
     const auto k = static_cast<std::size_t>(blocks);
     EXPECT_STREQ(b->Attribute("name"), hoh.mesh.blocks[k].name.c_str());

@@ -379,4 +379,5 @@ TEST(CgnsWriter, FileWriterRefusesATemporaryMesh) {
   // The writer refers to the mesh and runs later: a temporary would be gone by then.
   static_assert(WriterAccepts<const StructuredMesh&>);
   static_assert(!WriterAccepts<StructuredMesh>);
+  static_assert(!WriterAccepts<const StructuredMesh>);
 }

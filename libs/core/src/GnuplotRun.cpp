@@ -82,7 +82,7 @@ std::string GnuplotRun::output(const fs::path& png) {
     throw std::runtime_error(png.string() + ": cannot write file (" + fileErrorReason("cannot create it") + ")");
   std::error_code ignored;
   fs::remove(temporary, ignored);
-  drawing_.push_back(temporary);
+  temporaries_.push_back(temporary);
   return "set output " + gnuplotQuoted(temporary.string()) + "\n";
 }
 
@@ -99,13 +99,13 @@ void GnuplotRun::run(const std::string& script) {
   const int status = std::system((shellQuoted(program_) + " " + shellQuoted(scriptFile.string()) +
                                   " 2>" + shellQuoted(errors.string())).c_str());
   bool drawn = status == 0;
-  for (const auto& picture : drawing_) drawn = drawn && fs::is_regular_file(picture);
+  for (const auto& picture : temporaries_) drawn = drawn && fs::is_regular_file(picture);
   if (!drawn) {
     const std::string why = firstLine(errors);
     throw std::runtime_error("gnuplot failed" + (why.empty() ? std::string() : " (" + why + ")"));
   }
   pictures_.commit();
-  drawing_.clear();
+  temporaries_.clear();
 }
 
 }  // namespace passageMesh

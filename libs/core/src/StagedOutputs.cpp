@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
@@ -13,8 +14,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A name beside `target` that no other process, and no other staging in this one, uses.
 fs::path besides(const fs::path& target, const std::string& tag) {
-  return target.string() + "." + tag + std::to_string(static_cast<long>(::getpid()));
+  static std::atomic<long> stagings{0};
+  return target.string() + "." + tag + std::to_string(static_cast<long>(::getpid())) + "." +
+         std::to_string(stagings++);
 }
 
 }  // namespace
@@ -25,6 +29,8 @@ StagedOutputs::~StagedOutputs() {
 }
 
 fs::path StagedOutputs::stage(const fs::path& target, bool directory) {
+  for (const Entry& e : entries_)
+    if (e.target == target) throw std::runtime_error(target.string() + ": staged twice");
   if (fs::exists(target) && fs::is_directory(target) != directory)
     throw std::runtime_error(target.string() + ": cannot replace, it is " +
                              (directory ? "not a directory" : "a directory"));

@@ -117,8 +117,11 @@ BladeYExtent widestYExtent(const BladeShape& blade) {
       const Eigen::Vector2d& b = loop[(k + 1) % n];
       if (std::min(a.x(), b.x()) > x || std::max(a.x(), b.x()) < x) continue;
       // Where the segment a-b crosses the vertical through x (a vertical segment: both ends).
-      const double t = a.x() == b.x() ? 0.0 : (x - a.x()) / (b.x() - a.x());
-      for (const double y : {a.y() + t * (b.y() - a.y()), a.x() == b.x() ? b.y() : a.y() + t * (b.y() - a.y())}) {
+      if (a.x() == b.x()) {
+        low = std::min({low, a.y(), b.y()});
+        high = std::max({high, a.y(), b.y()});
+      } else {
+        const double y = a.y() + (x - a.x()) / (b.x() - a.x()) * (b.y() - a.y());
         low = std::min(low, y);
         high = std::max(high, y);
       }

@@ -5,6 +5,7 @@
 
 #include "passageMesh/core/Dictionary.hpp"
 #include "passageMesh/core/InputError.hpp"
+#include "passageMesh/core/NumberFormat.hpp"
 #include "passageMesh/passage/PassageBoundary.hpp"
 
 namespace passageMesh {
@@ -38,10 +39,14 @@ PassageCondition readCondition(const std::filesystem::path& file, double chord, 
   if (blade) {
     const BladeYExtent widest = widestYExtent(*blade);
     if (c.pitch <= widest.extent) {
-      std::ostringstream expected;
-      expected << std::setprecision(6) << "a pitch above " << widest.extent << " m, the blade's extent in y at x = "
-               << widest.x << " m (at this pitch the blade overlaps its periodic neighbour: no passage exists)";
-      refuse("pitch", expected.str());
+      std::ostringstream where;
+      where << std::setprecision(6) << widest.x << " m";
+      // The bound exactly (formatShortest: a pitch written as printed above it passes) and in chords.
+      std::ostringstream chords;
+      chords << std::setprecision(4) << widest.extent / chord;
+      refuse("pitch", "a pitch above " + formatShortest(widest.extent) + " m (" + chords.str() +
+                          "c), the blade's extent in y at x = " + where.str() +
+                          " (at this pitch the blade overlaps its periodic neighbour: no passage exists)");
     }
   }
 

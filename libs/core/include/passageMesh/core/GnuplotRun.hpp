@@ -45,7 +45,7 @@ class GnuplotRun {
   std::string program_;
   std::filesystem::path folder_;
   StagedOutputs pictures_;  // each picture's temporary beside it, moved into place by run()
-  std::vector<std::filesystem::path> drawing_;  // those temporaries, which gnuplot must write
+  std::vector<std::filesystem::path> temporaries_;  // those temporaries, which gnuplot must write
   int dataFiles_ = 0;
 };
 

@@ -21,9 +21,10 @@ class StagedOutputs {
   StagedOutputs& operator=(const StagedOutputs&) = delete;
 
   // The temporary path to write `target` into (beside it: same file system, so the move
-  // is a rename); creates the target's parent directory. Throws std::runtime_error when it
-  // cannot, or when the target exists as a different kind (directory versus file) than
-  // `directory` says.
+  // is a rename; a name of its own, so two stagings of one target never share it); creates
+  // the target's parent directory. Throws std::runtime_error when it cannot, when the target
+  // exists as a different kind (directory versus file) than `directory` says, or when this
+  // object has staged it already.
   std::filesystem::path stage(const std::filesystem::path& target, bool directory);
 
   // Stages the file `target` and writes `content` to its temporary; a failure names

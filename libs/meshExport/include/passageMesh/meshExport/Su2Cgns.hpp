@@ -23,7 +23,7 @@ namespace passageMesh {
 // `passage`, which must outlive it); its errors name `file` and the CGNS error. Not
 // thread-safe: the CGNS library has global state.
 FileWriter su2CgnsFileWriter(const UnstructuredPassage& passage, const std::filesystem::path& file);
-FileWriter su2CgnsFileWriter(UnstructuredPassage&& passage, const std::filesystem::path& file) = delete;
+FileWriter su2CgnsFileWriter(const UnstructuredPassage&& passage, const std::filesystem::path& file) = delete;
 
 // Writes `file` through a temporary renamed over it; throws std::runtime_error naming the
 // file when it cannot.

@@ -80,8 +80,10 @@ double bladeClearance(const BladeShape& blade, const PassageBoundary& boundary);
 // where the pitch exceeds this; at a pitch at or below it the blade overlaps its periodic
 // neighbour (a cascade that cannot exist), and no choice of meshing parameters helps.
 // From the profile sampled at 2000 points, cut at the x of every fourth sample (about
-// 2 ms): the result may fall short of the true widest extent, never exceed it by more
-// than the polygon's sagitta (about 1e-7 chord), so a pitch it refuses is too small.
+// 2 ms): the result may fall short of the true widest extent and exceeds it by at most the
+// polygon's sagitta (below 1e-6 chord), so a pitch it refuses is too small to within that.
+// (Where a vertical line meets the blade in one interval, as on the usual profiles, the
+// blade then overlaps its periodic neighbour; in any case no boundary y(x) fits.)
 struct BladeYExtent {
   double extent = 0;  // [m]
   double x = 0;       // [m]

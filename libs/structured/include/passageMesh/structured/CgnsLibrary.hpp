@@ -16,9 +16,9 @@ namespace passageMesh {
 // successful read and write closes them, are unaffected. Only the first call does anything.
 void prepareCgnsLibrary();
 
-// A CGNS file open for writing, closed on every path out once cg_open has succeeded (a
-// failed open leaves the file to the library; the writers write a temporary that their
-// callers remove). Every failing call throws
+// A CGNS file open for writing, closed on every path out, a failed cg_open included (the
+// constructor closes a file index the failed open took; the writers write a temporary
+// that their callers remove). Every failing call throws
 // std::runtime_error "<label>: CGNS <what> failed: <CGNS's message>", the label naming the
 // file the user knows (the target, when the path written is its staged temporary).
 class CgnsOutputFile {

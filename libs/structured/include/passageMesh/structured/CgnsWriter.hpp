@@ -40,7 +40,7 @@ void writeCgns(const StructuredMesh& mesh, const std::filesystem::path& file);
 // the mesh must outlive the writer.
 FileWriter cgnsFileWriter(const StructuredMesh& mesh, const std::filesystem::path& file);
 // The writer keeps a reference: a temporary mesh would be gone before it writes.
-FileWriter cgnsFileWriter(StructuredMesh&& mesh, const std::filesystem::path& file) = delete;
+FileWriter cgnsFileWriter(const StructuredMesh&& mesh, const std::filesystem::path& file) = delete;
 
 // The checks writeCgns makes before it writes anything (same exceptions).
 void validateStructuredMesh(const StructuredMesh& mesh);
