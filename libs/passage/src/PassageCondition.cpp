@@ -39,14 +39,12 @@ PassageCondition readCondition(const std::filesystem::path& file, double chord, 
   if (blade) {
     const BladeYExtent widest = widestYExtent(*blade);
     if (c.pitch <= widest.extent) {
-      std::ostringstream where;
-      where << std::setprecision(6) << widest.x << " m";
       // The bound exactly (formatShortest: a pitch written as printed above it passes) and in chords.
-      std::ostringstream chords;
-      chords << std::setprecision(4) << widest.extent / chord;
-      refuse("pitch", "a pitch above " + formatShortest(widest.extent) + " m (" + chords.str() +
-                          "c), the blade's extent in y at x = " + where.str() +
-                          " (at this pitch the blade overlaps its periodic neighbour: no passage exists)");
+      std::ostringstream expected;
+      expected << "a pitch above " << formatShortest(widest.extent) << " m (" << std::setprecision(4)
+               << widest.extent / chord << "c), the blade's extent in y at x = " << std::setprecision(6) << widest.x
+               << " m (at this pitch the blade overlaps its periodic neighbour: no passage exists)";
+      refuse("pitch", expected.str());
     }
   }
 

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -237,6 +238,16 @@ class PolishProblem {
     const int reach = window_.halfWidth + residualReach;
     return ringDistance(i, window_.i) <= reach && std::abs(j - window_.j) <= reach;
   }
+  // The neighbour of outer node (i, top) beyond the outer row (Q's rule,
+  // OBlockNeighbours.hpp): the periodic image of the partner line's node one row inside,
+  // or the H-block's node (a held copy); none at a corner or a physical boundary.
+  std::optional<NodeRef> beyondOuterRow(int i) {
+    const auto column = static_cast<std::size_t>(wrap(i));
+    const OuterNeighbour& g = nb_.outer[column];
+    if (g.block < 0) return std::nullopt;
+    if (g.block == nb_.oBlock) return NodeRef{node(g.node % o_.ni, g.node / o_.ni), g.dx, g.dy};
+    return NodeRef{ghostOf_[column]};
+  }
   // The stencil of node (i, j)'s Jacobian as the quality library takes it: 4 entries
   // (central differences), or 5 where it is one-sided in j (the wall row, and the outer
   // row where it has no neighbour beyond).
@@ -249,19 +260,13 @@ class PolishProblem {
       s.push_back({node(i, j + 1)});
       return s;
     }
-    const auto column = static_cast<std::size_t>(wrap(i));
-    const OuterNeighbour& g = nb_.outer[column];
-    if (g.block < 0) {  // a corner or a physical boundary: one-sided
+    if (const auto beyond = beyondOuterRow(i)) {  // central, across the outer row
+      s.push_back({node(i, top_ - 1)});
+      s.push_back(*beyond);
+    } else {  // a corner or a physical boundary: one-sided
       s.push_back({node(i, top_)});
       s.push_back({node(i, top_ - 1)});
       s.push_back({node(i, top_ - 2)});
-    } else if (g.block == nb_.oBlock) {  // across a periodic segment: a moving node's image
-      const int gi = g.node % o_.ni, gj = g.node / o_.ni;
-      s.push_back({node(i, top_ - 1)});
-      s.push_back({node(gi, gj), g.dx, g.dy});
-    } else {
-      s.push_back({node(i, top_ - 1)});
-      s.push_back({ghostOf_[column]});
     }
     return s;
   }
@@ -349,13 +354,8 @@ class PolishProblem {
       // the lines where they cross the periodic cut and the interfaces, which Q does not
       // see and a flow solver does (T106A in simpleFoam: docs/elliptic-smoothing.md
       // "Polish").
-      for (int i = 0; i < n_; ++i) {
-        const OuterNeighbour& g = nb_.outer[static_cast<std::size_t>(i)];
-        if (g.block < 0) continue;
-        const NodeRef beyond = g.block == nb_.oBlock ? NodeRef{node(g.node % o_.ni, g.node / o_.ni), g.dx, g.dy}
-                                                     : NodeRef{ghostOf_[static_cast<std::size_t>(i)]};
-        addSecondDifference({node(i, top_ - 1)}, {node(i, top_)}, beyond);
-      }
+      for (int i = 0; i < n_; ++i)
+        if (const auto beyond = beyondOuterRow(i)) addSecondDifference({node(i, top_ - 1)}, {node(i, top_)}, *beyond);
     }
     for (int i = 0; i < n_; ++i)
       for (int j = 0; j <= top_; ++j)

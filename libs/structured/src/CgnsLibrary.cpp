@@ -30,10 +30,10 @@ CgnsOutputFile::CgnsOutputFile(const std::filesystem::path& path, std::string la
   if (status == CG_OK) return;
   // A failed open may still have taken a file index, and no destructor runs after a
   // constructor throws: the message is read before the close can replace it.
-  const std::string error = label_ + ": CGNS open failed: " + cg_get_error();
+  const std::runtime_error error = failure("open");
   if (fn_ >= 0) cg_close(fn_);
   fn_ = -1;
-  throw std::runtime_error(error);
+  throw error;
 }
 
 CgnsOutputFile::~CgnsOutputFile() {
@@ -41,7 +41,11 @@ CgnsOutputFile::~CgnsOutputFile() {
 }
 
 void CgnsOutputFile::check(int status, const std::string& what) const {
-  if (status != CG_OK) throw std::runtime_error(label_ + ": CGNS " + what + " failed: " + cg_get_error());
+  if (status != CG_OK) throw failure(what);
+}
+
+std::runtime_error CgnsOutputFile::failure(const std::string& what) const {
+  return std::runtime_error(label_ + ": CGNS " + what + " failed: " + cg_get_error());
 }
 
 void CgnsOutputFile::close() {

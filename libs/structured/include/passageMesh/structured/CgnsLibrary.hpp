@@ -3,6 +3,7 @@
 // (libs/structured, libs/meshExport), and the output file every CGNS writer writes through.
 
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 
 namespace passageMesh {
@@ -35,6 +36,8 @@ class CgnsOutputFile {
   int fn() const { return fn_; }  // the CGNS file index
 
  private:
+  // "<label>: CGNS <what> failed: <CGNS's message>", CGNS's message read now.
+  std::runtime_error failure(const std::string& what) const;
   std::string label_;
   int fn_ = -1;
 };
